@@ -1,0 +1,194 @@
+// The C ABI: thin wrappers over acst::Material that never let an exception escape.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <new>
+#include <string>
+
+#include "abi_convention.hpp"
+#include "acst.h"
+#include "acst/material.hpp"
+#include "c_abi_support.hpp"
+#include "state_layout.hpp"
+
+struct acst_model {
+  acst::Material material;
+};
+
+namespace acst::abi {
+
+acst_status make_status(int code, const std::string& message, double factor) {
+  acst_status s;
+  s.code = code;
+  s.suggested_step_factor = factor;
+  std::snprintf(s.message, sizeof s.message, "%s", message.c_str());
+  return s;
+}
+
+acst_status ok_status() { return make_status(ACST_OK, "", 1.0); }
+
+void copy_counters(const integration::Report& r, acst_counters* out) {
+  const integration::Counters& c = r.counters;
+  *out = acst_counters{c.substeps_accepted, c.substeps_rejected, c.rate_evaluations,  c.crossing_iterations,
+                       c.unload_reload,     c.guard_pressure_floor, c.guard_small_R,   c.guard_lode_clamp,
+                       c.guard_h_floor,     c.guard_uniqueness,  c.pressure_floor_resets, r.plastic ? 1 : 0};
+}
+
+acst_status status_from_report(const integration::Report& r) {
+  switch (r.status) {
+    case integration::Status::ok: return ok_status();
+    case integration::Status::step_reduction_requested:
+      return make_status(ACST_STEP_REDUCTION,
+                         std::string("integration failed: ") + integration::reason_text(r.reason) +
+                             "; retry with a smaller strain increment",
+                         r.suggested_step_factor);
+    case integration::Status::invalid_input:
+      return make_status(ACST_INVALID_INPUT, "strain increment is not finite", 1.0);
+    case integration::Status::nonphysical_state:
+      return make_status(ACST_NONPHYSICAL_STATE, "stress or state variables are non-finite or non-physical", 1.0);
+  }
+  return make_status(ACST_INTERNAL_ERROR, "unknown integrator status", 1.0);
+}
+
+acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
+                         integration::Report& rep) {
+  State s;
+  s.stress = stress_to_model(stress);
+  fill_state(s, statev);
+  Mat6 D;
+  rep = mat.update(s, strain_to_model(dstrain), tangent ? &D : nullptr);
+  if (rep.status != integration::Status::ok) return status_from_report(rep);
+  stress_from_model(s.stress, stress);
+  store_state(s, statev);
+  if (tangent) tangent_from_model(D, tangent);
+  return ok_status();
+}
+
+}  // namespace acst::abi
+
+using namespace acst::abi;
+
+#define ACST_GUARD(...)                                                       \
+  try {                                                                        \
+    __VA_ARGS__                                                                \
+  } catch (const acst::InputError& e) {                                        \
+    return make_status(ACST_INVALID_INPUT, e.what(), 1.0);                     \
+  } catch (const std::bad_alloc&) {                                            \
+    return make_status(ACST_INTERNAL_ERROR, "out of memory", 1.0);             \
+  } catch (const std::exception& e) {                                          \
+    return make_status(ACST_INTERNAL_ERROR, e.what(), 1.0);                    \
+  } catch (...) {                                                              \
+    return make_status(ACST_INTERNAL_ERROR, "unknown exception", 1.0);         \
+  }
+
+#define ACST_REQUIRE(cond, text) \
+  if (!(cond)) return make_status(ACST_INVALID_INPUT, text, 1.0)
+
+extern "C" {
+
+acst_status acst_model_create(acst_model** model, const char* json_text) {
+  ACST_REQUIRE(model, "acst_model_create: model pointer is NULL");
+  *model = nullptr;
+  ACST_REQUIRE(json_text, "acst_model_create: JSON text is NULL");
+  ACST_GUARD({
+    *model = new acst_model{acst::Material::from_json(json_text)};
+    return ok_status();
+  })
+}
+
+void acst_model_destroy(acst_model* model) { delete model; }
+
+int acst_state_size(const acst_model*) { return state_size; }
+
+const char* acst_state_name(const acst_model*, int i) { return (i >= 0 && i < state_size) ? state_names[i] : nullptr; }
+
+acst_status acst_initial_state(double* statev, double* stress_out, const acst_model* model, const double* stress0,
+                               double void_ratio, const double* deposition_direction) {
+  ACST_REQUIRE(statev && stress_out && model && stress0 && deposition_direction,
+               "acst_initial_state: a pointer argument is NULL");
+  ACST_GUARD({
+    const Eigen::Vector3d b(deposition_direction[0], deposition_direction[1], deposition_direction[2]);
+    const acst::State s = model->material.initial_state(stress_to_model(stress0), void_ratio, b);
+    store_state(s, statev);
+    stress_from_model(s.stress, stress_out);
+    return ok_status();
+  })
+}
+
+acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
+                        const acst_model* model, const double* dstrain) {
+  ACST_REQUIRE(stress && statev && model && dstrain, "acst_update: a required pointer argument is NULL");
+  ACST_GUARD({
+    acst::integration::Report rep;
+    const acst_status st = update_point(stress, statev, tangent, model->material, dstrain, rep);
+    if (counters) copy_counters(rep, counters);
+    return st;
+  })
+}
+
+acst_status acst_update_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                              int* point_status, acst_counters* counters, const acst_model* model, size_t n,
+                              const double* dstrain, size_t dstrain_stride) {
+  ACST_REQUIRE(model && (n == 0 || (stress && statev && dstrain)), "acst_update_batch: a required pointer is NULL");
+  ACST_REQUIRE(stress_stride >= 6 && statev_stride >= (size_t)state_size && dstrain_stride >= 6,
+               "acst_update_batch: strides must be at least 6 (stress, strain) and ACST_NSTATV (state)");
+  ACST_GUARD({
+    acst_status first = ok_status();
+    acst::integration::Report rep;
+    acst::integration::Counters total;
+    int plastic = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const acst_status st = update_point(stress + i * stress_stride, statev + i * statev_stride, nullptr,
+                                          model->material, dstrain + i * dstrain_stride, rep);
+      total += rep.counters;
+      plastic += rep.plastic;
+      if (point_status) point_status[i] = st.code;
+      if (st.code != ACST_OK && first.code == ACST_OK)
+        first = make_status(st.code, "point " + std::to_string(i) + ": " + st.message, st.suggested_step_factor);
+    }
+    if (counters) {
+      rep.counters = total;
+      copy_counters(rep, counters);
+      counters->plastic = plastic;
+    }
+    return first;
+  })
+}
+
+acst_status acst_wave_speed(double* speed, const acst_model* model, const double* stress, const double* statev,
+                            double density) {
+  ACST_REQUIRE(speed && model && stress && statev, "acst_wave_speed: a pointer argument is NULL");
+  ACST_REQUIRE(density > 0.0 && std::isfinite(density), "acst_wave_speed: density must be positive (kg/m^3)");
+  ACST_GUARD({
+    acst::State s;
+    s.stress = stress_to_model(stress);
+    fill_state(s, statev);
+    const acst::Diagnostics d = model->material.diagnostics(s);
+    const double M = d.K + 4.0 * d.G / 3.0;  // kPa
+    *speed = std::sqrt(M * 1000.0 / density);
+    ACST_REQUIRE(std::isfinite(*speed), "acst_wave_speed: state gives a non-finite stiffness");
+    return ok_status();
+  })
+}
+
+static const char* const diagnostic_names[ACST_NDIAGNOSTICS] = {"p", "q", "R", "sin3theta", "psi", "zeta", "A",
+                                                                "fabric_norm", "e_c", "D", "Kp", "G", "K"};
+
+const char* acst_diagnostic_name(int i) { return (i >= 0 && i < ACST_NDIAGNOSTICS) ? diagnostic_names[i] : nullptr; }
+
+acst_status acst_diagnostics(double* out, const acst_model* model, const double* stress, const double* statev) {
+  ACST_REQUIRE(out && model && stress && statev, "acst_diagnostics: a pointer argument is NULL");
+  ACST_GUARD({
+    acst::State s;
+    s.stress = stress_to_model(stress);
+    fill_state(s, statev);
+    const acst::Diagnostics d = model->material.diagnostics(s);
+    const double v[ACST_NDIAGNOSTICS] = {d.p,           d.q,   d.R, d.sin3theta, d.psi, d.zeta, d.A,
+                                         d.fabric_norm, d.critical_void_ratio, d.D, d.Kp, d.G, d.K};
+    std::memcpy(out, v, sizeof v);
+    return ok_status();
+  })
+}
+
+}  // extern "C"

@@ -1,0 +1,27 @@
+#pragma once
+// Layout of the state-variable array shared by the acst_* functions and umat_.
+#include "acst/state.hpp"
+
+namespace acst::abi {
+
+inline constexpr int state_size = 10;
+inline constexpr const char* state_names[state_size] = {
+    "F11", "F22", "F33", "F12", "F13", "F23", "void_ratio", "H", "substep_hint", "pressure_floor_resets"};
+
+inline void fill_state(State& s, const double* statev) {
+  for (int i = 0; i < 6; ++i) s.fabric[i] = statev[i];
+  s.void_ratio = statev[6];
+  s.H = statev[7];
+  s.substep_hint = statev[8];
+  s.pressure_floor_resets = static_cast<int>(statev[9]);
+}
+
+inline void store_state(const State& s, double* statev) {
+  for (int i = 0; i < 6; ++i) statev[i] = s.fabric[i];
+  statev[6] = s.void_ratio;
+  statev[7] = s.H;
+  statev[8] = s.substep_hint;
+  statev[9] = s.pressure_floor_resets;
+}
+
+}  // namespace acst::abi

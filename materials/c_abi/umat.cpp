@@ -1,0 +1,63 @@
+// Abaqus-compatible UMAT entry point over the same update path as acst_update.
+//
+// PROPS(1..18): G0 nu Mc c e_Gamma lambda_c xi d1 m h1 h2 n e_A F0 k_f e_max e_min p_min
+// PROPS(19) (optional): scheme, 0 FE-1, 1 ME (default), 2 RK23, 3 RK45;  PROPS(20) (optional): STOL.
+// STATEV(1..10): as acst_state_name (F11..F23, void ratio, H, substep hint, floor resets);
+// the host initialises them (acst_initial_state gives the values).
+// NTENS 6 (11 22 33 12 13 23) or 4 (11 22 33 12). Abaqus convention: tension positive,
+// engineering shear strain, DDSDDE column-major.
+#include <algorithm>
+
+#include "abi_convention.hpp"
+#include "acst.h"
+#include "c_abi_support.hpp"
+
+namespace {
+
+acst::Material material_from_props(const double* props, int nprops) {
+  acst::Parameters p;
+  for (int i = 0; i < acst::parameter_count; ++i) acst::parameter_by_index(p, i) = props[i];
+  acst::integration::Options o;
+  if (nprops > 18) {
+    const int code = static_cast<int>(props[18]);
+    if (code < 0 || code > 3 || props[18] != code) throw acst::InputError("PROPS(19) must be 0, 1, 2 or 3");
+    o.scheme = static_cast<acst::integration::Scheme>(code);
+  }
+  if (nprops > 19) o.stol = props[19];
+  return acst::Material(p, o);
+}
+
+}  // namespace
+
+extern "C" void umat_(double* stress, double* statev, double* ddsdde, double*, double*, double*, double*, double*,
+                      double*, double*, const double*, const double* dstran, const double*, const double*,
+                      const double*, const double*, const double*, const double*, const char*, const int*,
+                      const int*, const int* ntens, const int* nstatv, const double* props, const int* nprops,
+                      const double*, const double*, double* pnewdt, const double*, const double*, const double*,
+                      const int*, const int*, const int*, const int*, const int*, const int*, size_t) {
+  // A failure that no smaller time step can fix: PNEWDT = 0 tells the host to stop cutting back.
+  constexpr double unrecoverable = 0.0;
+  try {
+    const int nt = ntens ? *ntens : 0;
+    if ((nt != 6 && nt != 4) || !nstatv || *nstatv < ACST_NSTATV || !nprops || *nprops < acst::parameter_count ||
+        !stress || !statev || !ddsdde || !dstran || !props || !pnewdt) {
+      if (pnewdt) *pnewdt = unrecoverable;
+      return;
+    }
+    const acst::Material mat = material_from_props(props, *nprops);
+    double s6[6] = {0, 0, 0, 0, 0, 0}, d6[6] = {0, 0, 0, 0, 0, 0}, tangent[36];
+    std::copy(stress, stress + nt, s6);
+    std::copy(dstran, dstran + nt, d6);
+    acst::integration::Report rep;
+    const acst_status st = acst::abi::update_point(s6, statev, tangent, mat, d6, rep);
+    if (st.code != ACST_OK) {
+      *pnewdt = st.code == ACST_STEP_REDUCTION ? std::min(*pnewdt, st.suggested_step_factor) : unrecoverable;
+      return;
+    }
+    std::copy(s6, s6 + nt, stress);
+    for (int i = 0; i < nt; ++i)
+      for (int j = 0; j < nt; ++j) ddsdde[i + j * nt] = tangent[6 * i + j];
+  } catch (...) {
+    if (pnewdt) *pnewdt = unrecoverable;
+  }
+}

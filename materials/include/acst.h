@@ -1,0 +1,119 @@
+/* acst.h: C ABI of the ACST sand model library (anisotropic critical state theory,
+ * Li & Dafalias 2012, multiaxial form of Gao et al. 2014) and its isotropic reduction.
+ *
+ * CONVENTION AT THIS INTERFACE (the Abaqus UMAT convention; the C++ API differs):
+ *   - Voigt order 11, 22, 33, 12, 13, 23;
+ *   - strain components are ENGINEERING shear strains (gamma_12 = 2 eps_12);
+ *   - TENSION POSITIVE for stress and strain;
+ *   - stress in kPa, density in kg/m^3, wave speed in m/s;
+ *   - the tangent is row-major, tangent[6*i + j] = d stress_i / d strain_j, in this convention.
+ * State variables (statev) are stored in the model's own frame and sign (compression positive):
+ * they are state, not stress; ask acst_state_name for their names.
+ *
+ * Rules: no function aborts, exits, prints or keeps global state. A model handle is immutable
+ * after creation, so one handle may be used from many threads at once; each thread passes its
+ * own stress and state arrays. Every function returns an acst_status whose message says what went
+ * wrong. Mutable arguments come first.
+ */
+#ifndef ACST_H
+#define ACST_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct acst_model acst_model; /* opaque */
+
+enum acst_status_code {
+  ACST_OK = 0,
+  ACST_STEP_REDUCTION = 1,     /* integration failed; retry with strain increment x suggested_step_factor */
+  ACST_INVALID_INPUT = 2,      /* bad JSON, parameter, argument or non-finite strain */
+  ACST_NONPHYSICAL_STATE = 3,  /* non-finite or non-physical stress/state on entry */
+  ACST_INTERNAL_ERROR = 4      /* unexpected failure (out of memory, ...) */
+};
+
+typedef struct acst_status {
+  int code;                       /* an acst_status_code */
+  double suggested_step_factor;   /* < 1 with ACST_STEP_REDUCTION, else 1 */
+  char message[256];              /* empty when code == ACST_OK */
+} acst_status;
+
+/* Work and guard counters of one update call (summed over points in the batch form). */
+typedef struct acst_counters {
+  int substeps_accepted;
+  int substeps_rejected;
+  int rate_evaluations;
+  int crossing_iterations;
+  int unload_reload;
+  int guard_pressure_floor;
+  int guard_small_R;
+  int guard_lode_clamp;
+  int guard_h_floor;
+  int guard_uniqueness;
+  int pressure_floor_resets;
+  int plastic; /* 1 if the call ended on a plastic substep (count of such points in a batch) */
+} acst_counters;
+
+#define ACST_NTENS 6
+#define ACST_NSTATV 10
+#define ACST_NDIAGNOSTICS 13
+
+/* Creates a model from JSON text:
+ *   {"model": "ACST"|"isotropic", "parameters": {...}, "integrator": {...}}
+ * (see docs/c-abi.md). On failure *model is NULL and the message names the JSON path. */
+acst_status acst_model_create(acst_model** model, const char* json_text);
+void acst_model_destroy(acst_model* model);
+
+/* Number of state variables (ACST_NSTATV) and the name of variable i (NULL if out of range). */
+int acst_state_size(const acst_model* model);
+const char* acst_state_name(const acst_model* model, int i);
+
+/* Initial stress (this interface's convention) and state from a stress, a void ratio and the
+ * deposition direction (normal to the bedding planes, any non-zero length).
+ * stress_out may alias stress0. */
+acst_status acst_initial_state(double* statev, double* stress_out, const acst_model* model, const double* stress0,
+                               double void_ratio, const double* deposition_direction);
+
+/* One stress update: stress[6] and statev[ACST_NSTATV] in and out, dstrain[6] in.
+ * tangent (36 doubles) and counters are optional (NULL). On any failure stress and statev are
+ * left unchanged. */
+acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
+                        const acst_model* model, const double* dstrain);
+
+/* The same over n points; strides are in doubles between consecutive points. point_status
+ * (n ints, optional) receives each point's code; the returned status is the first failure,
+ * its message naming the point. All points are attempted. */
+acst_status acst_update_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                              int* point_status, acst_counters* counters, const acst_model* model, size_t n,
+                              const double* dstrain, size_t dstrain_stride);
+
+/* P-wave speed sqrt((K + 4G/3)/rho) in m/s from the current elastic stiffness, for explicit
+ * time steps; density in kg/m^3. */
+acst_status acst_wave_speed(double* speed, const acst_model* model, const double* stress, const double* statev,
+                            double density);
+
+/* Derived quantities (ACST_NDIAGNOSTICS doubles, named by acst_diagnostic_name):
+ * p, q, R, sin3theta, psi, zeta, A, fabric_norm, e_c, D, Kp, G, K (stresses kPa, compression
+ * positive). The loading direction is the one of the current stress ratio. */
+acst_status acst_diagnostics(double* out, const acst_model* model, const double* stress, const double* statev);
+const char* acst_diagnostic_name(int i);
+
+/* Abaqus-compatible entry point (standard UMAT argument list; see docs/c-abi.md for the PROPS
+ * and STATEV layouts). NTENS = 6 (3-D) or 4 (plane strain / axisymmetric: 11, 22, 33, 12).
+ * Failures set PNEWDT = suggested step factor (< 1) and leave STRESS and STATEV unchanged. */
+void umat_(double* stress, double* statev, double* ddsdde, double* sse, double* spd, double* scd, double* rpl,
+           double* ddsddt, double* drplde, double* drpldt, const double* stran, const double* dstran,
+           const double* time, const double* dtime, const double* temp, const double* dtemp, const double* predef,
+           const double* dpred, const char* cmname, const int* ndi, const int* nshr, const int* ntens,
+           const int* nstatv, const double* props, const int* nprops, const double* coords, const double* drot,
+           double* pnewdt, const double* celent, const double* dfgrd0, const double* dfgrd1, const int* noel,
+           const int* npt, const int* layer, const int* kspt, const int* kstep, const int* kinc,
+           size_t cmname_length);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ACST_H */

@@ -1,0 +1,149 @@
+#pragma once
+// The ACST model as the integrators see it: rates of (stress, fabric, void ratio) for a strain
+// increment, yield value, error norm and drift correction (docs/acst-model.md section 7).
+#include <Eigen/Core>
+#include <cmath>
+
+#include "acst/critical_state.hpp"
+#include "acst/dilatancy.hpp"
+#include "acst/elasticity.hpp"
+#include "acst/fabric.hpp"
+#include "acst/integration/report.hpp"
+#include "acst/loading_index.hpp"
+#include "acst/parameters.hpp"
+#include "acst/plastic_modulus.hpp"
+#include "acst/yield_function.hpp"
+
+namespace acst {
+
+// Every intermediate quantity of one constitutive evaluation.
+struct PlasticQuantities {
+  double p;
+  StressRatioState ratio;
+  ElasticModuli moduli;
+  double psi;    // state parameter
+  double A;      // fabric anisotropy variable F:n
+  double zeta;   // dilatancy state parameter
+  double D;      // dilatancy
+  double h;      // hardening coefficient after its floor
+  bool h_floored;
+  double Kp;     // plastic modulus
+  double n_r;    // n:r
+};
+
+inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
+                                            const Sym& strain_direction) {
+  PlasticQuantities q;
+  q.p = mean_stress(sigma);
+  q.ratio = stress_ratio_state(sigma, prm.c, prm.R_tolerance, strain_direction);
+  const double g = q.ratio.lode.g;
+  q.moduli = elastic_moduli(prm, e, q.p);
+  q.psi = state_parameter(prm, e, q.p);
+  q.A = fabric_anisotropy_variable(F, q.ratio.n);
+  q.zeta = dilatancy_state_parameter(q.psi, prm.e_A, q.A);
+  const double R = std::max(q.ratio.R, prm.R_tolerance);
+  q.D = dilatancy(prm.d1, prm.m, q.zeta, q.ratio.R, prm.Mc, g);
+  const double h = hardening_coefficient(prm.h1, prm.h2, e);
+  q.h_floored = h < prm.h_min;
+  q.h = q.h_floored ? prm.h_min : h;
+  q.Kp = plastic_modulus(q.moduli.G, q.h, prm.Mc, g, prm.n, q.zeta, R);
+  q.n_r = contract(q.ratio.n, q.ratio.r);
+  return q;
+}
+
+class AcstRates {
+ public:
+  static constexpr int size = 13;  // stress (6), fabric (6), void ratio
+  using Vector = Eigen::Matrix<double, size, 1>;
+  using Reason = integration::Reason;
+  using Counters = integration::Counters;
+
+  explicit AcstRates(const Parameters& prm) : prm_(prm) {}
+
+  static Sym stress(const Vector& y) { return y.template head<6>(); }
+  static Sym fabric(const Vector& y) { return y.template segment<6>(6); }
+  static double void_ratio(const Vector& y) { return y[12]; }
+
+  void elastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters& c) const {
+    ++c.rate_evaluations;
+    const double e = void_ratio(y);
+    dy.template head<6>() = elastic_stress_increment(elastic_moduli(prm_, e, mean_stress(stress(y))), deps);
+    dy.template segment<6>(6).setZero();
+    dy[12] = -(1.0 + e) * trace(deps);  // de = -(1 + e) d eps_v
+  }
+
+  // d sigma = 2G de_dev + K d eps_v I - <L>(2G n + sqrt(2/3) K D I);  dF = <L> k_f (n - F).
+  Reason plastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters& c) const {
+    ++c.rate_evaluations;
+    const Sym sigma = stress(y), F = fabric(y);
+    const double e = void_ratio(y);
+    if (!(mean_stress(sigma) >= prm_.p_min)) {
+      ++c.guard_pressure_floor;
+      return Reason::pressure_floor;
+    }
+    const PlasticQuantities q = plastic_quantities(prm_, sigma, F, e, deps);
+    count_guards(q, c);
+    const LoadingIndexTerms L = loading_index_terms(q.moduli.G, q.moduli.K, q.Kp, q.D, q.ratio.n, q.n_r, deps);
+    if (!(L.denominator > 0.0)) {
+      ++c.guard_uniqueness;
+      return Reason::loss_of_uniqueness;
+    }
+    const double load = L.numerator > 0.0 ? L.numerator / L.denominator : 0.0;
+    Sym dsig = elastic_stress_increment(q.moduli, deps);
+    dsig -= load * (2.0 * q.moduli.G * q.ratio.n + std::sqrt(2.0 / 3.0) * q.moduli.K * q.D * identity_tensor());
+    dy.template head<6>() = dsig;
+    dy.template segment<6>(6) = load * fabric_rate(prm_.k_f, q.ratio.n, F);
+    dy[12] = -(1.0 + e) * trace(deps);
+    return Reason::none;
+  }
+
+  double yield_value(const Vector& y, double H, const Sym& deps) const {
+    const Sym sigma = stress(y);
+    const StressRatioState st = stress_ratio_state(sigma, prm_.c, prm_.R_tolerance, deps);
+    return yield_function(st.R, st.lode.g, H);
+  }
+
+  // Cosine between df/dsigma at y and the elastic trial stress increment.
+  double unloading_cosine(const Vector& y, const Vector& elastic_dy, const Sym& deps) const {
+    const Sym sigma = stress(y);
+    const StressRatioState st = stress_ratio_state(sigma, prm_.c, prm_.R_tolerance, deps);
+    const Sym grad = yield_gradient(st, mean_stress(sigma));
+    const Sym dsig = elastic_dy.template head<6>();
+    const double den = norm(grad) * norm(dsig);
+    return den > 0.0 ? contract(grad, dsig) / den : 0.0;
+  }
+
+  // max(|d sigma_err| / |sigma|, |dF_err| / max(|F|, 0.01), |de_err| / (1 + e)).
+  double relative_error(const Vector& y_new, const Vector& err) const {
+    const double es = norm(stress(err)) / std::max(norm(stress(y_new)), prm_.p_min);
+    const double ef = norm(fabric(err)) / std::max(norm(fabric(y_new)), 1e-2);
+    const double ee = std::abs(err[12]) / (1.0 + y_new[12]);
+    return std::max(es, std::max(ef, ee));
+  }
+
+  // H = R/g(theta): exact drift correction after a plastic substep.
+  double hardening_memory(const Vector& y, const Sym& deps) const {
+    const StressRatioState st = stress_ratio_state(stress(y), prm_.c, prm_.R_tolerance, deps);
+    return st.R / st.lode.g;
+  }
+
+  bool admissible(const Vector& y) const { return mean_stress(stress(y)) >= prm_.p_min && y[12] > 0.0; }
+
+  void reset_to_pressure_floor(Vector& y, double& H) const {
+    y.template head<6>() = prm_.p_min * identity_tensor();
+    H = 0.0;
+  }
+
+  const Parameters& parameters() const { return prm_; }
+
+ private:
+  const Parameters& prm_;
+
+  static void count_guards(const PlasticQuantities& q, Counters& c) {
+    c.guard_small_R += q.ratio.small_R;
+    c.guard_lode_clamp += q.ratio.lode_clamped;
+    c.guard_h_floor += q.h_floored;
+  }
+};
+
+}  // namespace acst

@@ -1,0 +1,213 @@
+#pragma once
+// Explicit substepping with error control (Sloan 1987; Sloan, Abbo & Sheng 2001), generic over
+// the constitutive model. The scheme knows rates, yield values and error norms, nothing of sand.
+//
+// A Model provides:
+//   using Vector;                                   integrated variables y
+//   Reason plastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters&) const;
+//   void   elastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters&) const;
+//   double yield_value(const Vector& y, double H, const Sym& deps) const;
+//   double unloading_cosine(const Vector& y, const Vector& elastic_dy, const Sym& deps) const;
+//   double relative_error(const Vector& y_new, const Vector& error) const;
+//   double hardening_memory(const Vector& y, const Sym& deps) const;   exact drift correction
+//   bool   admissible(const Vector& y) const;
+//   void   reset_to_pressure_floor(Vector& y, double& H) const;
+// Rates are per unit pseudo-time T in [0, 1] for the whole strain increment deps.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "acst/integration/embedded_runge_kutta.hpp"
+#include "acst/integration/options.hpp"
+#include "acst/integration/report.hpp"
+#include "acst/tensor.hpp"
+
+namespace acst::integration {
+
+template <class Model>
+class ExplicitSubstepping {
+ public:
+  using Vector = typename Model::Vector;
+
+  ExplicitSubstepping(const Model& model, const Options& opt) : model_(model), opt_(opt) {}
+
+  // Advances y and H over the strain increment deps. substep_hint carries the last accepted
+  // substep size between calls (pseudo-time units).
+  Report integrate(Vector& y, double& H, double& substep_hint, const Sym& deps) const {
+    Report rep;
+    const Vector trial = elastic_update(y, deps, rep.counters);
+    if (model_.yield_value(trial, H, deps) <= opt_.ftol) {
+      y = trial;
+      return finish(y, H, rep, Reason::none);
+    }
+    const double alpha = elastic_fraction(y, H, deps, trial, rep.counters);
+    if (alpha > 0.0) y = elastic_update(y, alpha * deps, rep.counters);
+    const Sym plastic_part = (1.0 - alpha) * deps;
+    const Reason r = opt_.scheme == Scheme::forward_euler ? forward_euler(y, H, plastic_part, rep)
+                                                          : adaptive(y, H, substep_hint, plastic_part, rep);
+    return finish(y, H, rep, r);
+  }
+
+ private:
+  const Model& model_;
+  const Options& opt_;
+
+  // Heun's two-stage secant update for the pressure-dependent elastic law.
+  Vector elastic_update(const Vector& y, const Sym& deps, Counters& c) const {
+    Vector k1, k2;
+    model_.elastic_rate(y, deps, k1, c);
+    model_.elastic_rate(y + k1, deps, k2, c);
+    return y + 0.5 * (k1 + k2);
+  }
+
+  double yield_at(const Vector& y, double H, const Sym& deps, double alpha, Counters& c) const {
+    return model_.yield_value(elastic_update(y, alpha * deps, c), H, deps);
+  }
+
+  // Fraction of deps that is elastic: 0 for plastic loading from the surface, the crossing for a
+  // start inside, the reloading crossing for unload-then-reload.
+  double elastic_fraction(const Vector& y, double H, const Sym& deps, const Vector& trial, Counters& c) const {
+    const double f0 = model_.yield_value(y, H, deps);
+    const double f1 = model_.yield_value(trial, H, deps);
+    if (f0 < -opt_.ftol) return pegasus(y, H, deps, 0.0, f0, 1.0, f1, c);
+    if (model_.unloading_cosine(y, trial - y, deps) >= -opt_.ltol) return 0.0;
+    ++c.unload_reload;
+    double a = 0.0, fa = f0;
+    const int n = std::max(opt_.unload_scan_intervals, 1);
+    for (int j = 1; j <= n; ++j) {
+      const double b = double(j) / n;
+      const double fb = j == n ? f1 : yield_at(y, H, deps, b, c);
+      if (fb > opt_.ftol) return fa < -opt_.ftol ? pegasus(y, H, deps, a, fa, b, fb, c) : a;
+      a = b;
+      fa = fb;
+    }
+    return 0.0;
+  }
+
+  // Pegasus regula falsi between fa < 0 and fb > 0.
+  double pegasus(const Vector& y, double H, const Sym& deps, double a, double fa, double b, double fb,
+                 Counters& c) const {
+    double x = b;
+    for (int it = 0; it < opt_.crossing_max_iterations; ++it) {
+      ++c.crossing_iterations;
+      x = b - fb * (b - a) / (fb - fa);
+      const double fx = yield_at(y, H, deps, x, c);
+      if (std::abs(fx) <= opt_.ftol) return x;
+      if (fx * fb < 0.0) {
+        a = b;
+        fa = fb;
+      } else {
+        fa = fa * fb / (fb + fx);
+      }
+      b = x;
+      fb = fx;
+    }
+    return x;
+  }
+
+  Reason rate(const Vector& y, const Sym& deps, Vector& k, Counters& c) const {
+    const Reason r = model_.plastic_rate(y, deps, k, c);
+    if (r != Reason::none) return r;
+    return k.allFinite() ? Reason::none : Reason::non_finite;
+  }
+
+  Reason forward_euler(Vector& y, double& H, const Sym& deps, Report& rep) const {
+    const int n = std::max(opt_.fe_substeps, 1);
+    Vector k;
+    for (int i = 0; i < n; ++i) {
+      const Reason r = rate(y, deps, k, rep.counters);
+      if (r != Reason::none) return r;
+      y += k / n;
+      if (!model_.admissible(y)) return Reason::pressure_floor;
+      H = model_.hardening_memory(y, deps);
+      ++rep.counters.substeps_accepted;
+      rep.plastic = true;
+    }
+    return Reason::none;
+  }
+
+  Reason adaptive(Vector& y, double& H, double& substep_hint, const Sym& deps, Report& rep) const {
+    const Tableau& tb = tableau_of(opt_.scheme);
+    const double exponent = 1.0 / (tb.error_order + 1.0);
+    std::array<Vector, 7> k;
+    Counters& c = rep.counters;
+    double T = 0.0;
+    // dT_next: the natural substep size; h: the one tried (cut to reach T = 1 exactly).
+    double dT_next = (opt_.reuse_last_substep && substep_hint > 0.0) ? std::min(substep_hint, 1.0) : 1.0;
+    bool k0_valid = false, last_rejected = false;
+    Reason last_failure = Reason::none;
+    while (T < 1.0) {
+      const bool truncated = dT_next >= 1.0 - T;
+      const double h = truncated ? 1.0 - T : dT_next;
+      if (dT_next < opt_.min_substep)
+        return last_failure == Reason::none ? Reason::substep_too_small : last_failure;
+      if (c.substeps_accepted + c.substeps_rejected >= opt_.max_substeps) return Reason::too_many_substeps;
+      Reason r = Reason::none;
+      if (!k0_valid) {
+        r = rate(y, deps, k[0], c);
+        if (r != Reason::none) return r;  // fails at the start state: a smaller substep cannot help
+        k0_valid = true;
+      }
+      for (int s = 1; s < tb.stages && r == Reason::none; ++s) {
+        Vector ys = y;
+        for (int j = 0; j < s; ++j) ys += (h * tb.a[s][j]) * k[j];
+        r = rate(ys, deps, k[s], c);
+      }
+      Vector y_new = y, err = Vector::Zero();
+      if (r == Reason::none) {
+        for (int s = 0; s < tb.stages; ++s) {
+          y_new += (h * tb.b[s]) * k[s];
+          err += (h * (tb.b[s] - tb.b_low[s])) * k[s];
+        }
+        if (!model_.admissible(y_new)) r = Reason::pressure_floor;
+      }
+      if (r != Reason::none) {  // a stage left the admissible region: shrink hard
+        last_failure = r;
+        ++c.substeps_rejected;
+        dT_next = 0.1 * h;
+        last_rejected = true;
+        continue;
+      }
+      const double R = std::max(model_.relative_error(y_new, err), 1e-16);
+      const double factor = 0.9 * std::pow(opt_.stol / R, exponent);
+      if (R > opt_.stol) {
+        ++c.substeps_rejected;
+        dT_next = h * std::max(factor, 0.1);
+        last_rejected = true;
+        continue;
+      }
+      y = y_new;
+      T = truncated ? 1.0 : T + h;
+      H = model_.hardening_memory(y, deps);
+      ++c.substeps_accepted;
+      rep.plastic = true;
+      if (tb.first_same_as_last)
+        k[0] = k[tb.stages - 1];
+      else
+        k0_valid = false;
+      const double grown = h * (last_rejected ? std::min(factor, 1.0) : std::min(factor, 1.1));
+      dT_next = truncated ? std::max(dT_next, grown) : grown;
+      last_rejected = false;
+      last_failure = Reason::none;
+    }
+    substep_hint = std::min(dT_next, 1.0);
+    return Reason::none;
+  }
+
+  Report finish(Vector& y, double& H, Report& rep, Reason r) const {
+    if (r == Reason::none && !model_.admissible(y)) r = Reason::pressure_floor;
+    if (r == Reason::pressure_floor && opt_.pressure_floor == PressureFloorPolicy::reset) {
+      model_.reset_to_pressure_floor(y, H);
+      ++rep.counters.pressure_floor_resets;
+      r = Reason::none;
+    }
+    rep.reason = r;
+    if (r != Reason::none) {
+      rep.status = Status::step_reduction_requested;
+      rep.suggested_step_factor = r == Reason::loss_of_uniqueness ? 0.25 : 0.5;
+    }
+    return rep;
+  }
+};
+
+}  // namespace acst::integration

@@ -1,0 +1,141 @@
+#include "acst/json_input.hpp"
+
+#include <set>
+
+#include "acst/material.hpp"
+
+namespace acst {
+
+using nlohmann::json;
+
+namespace {
+
+const json& require_object(const json& j, const std::string& path) {
+  if (!j.is_object()) throw InputError(path + ": expected a JSON object, got " + j.type_name());
+  return j;
+}
+
+void reject_unknown_keys(const json& j, const std::set<std::string>& allowed, const std::string& path) {
+  for (const auto& [key, value] : j.items()) {
+    if (!allowed.count(key)) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      throw InputError(path + "/" + key + ": unknown key (allowed: " + list + ")");
+    }
+  }
+}
+
+double number_at(const json& j, const std::string& key, const std::string& path) {
+  const json& v = j.at(key);
+  if (!v.is_number()) throw InputError(path + "/" + key + ": expected a number, got " + v.type_name());
+  return v.get<double>();
+}
+
+}  // namespace
+
+Variant variant_from_json(const json& j, const std::string& path) {
+  if (!j.is_string()) throw InputError(path + ": expected \"ACST\" or \"isotropic\", got " + j.type_name());
+  const std::string s = j.get<std::string>();
+  if (s == "ACST") return Variant::anisotropic;
+  if (s == "isotropic") return Variant::isotropic;
+  throw InputError(path + ": unknown model '" + s + "' (allowed: ACST, isotropic)");
+}
+
+Parameters parameters_from_json(const json& j, Variant variant, const std::string& path) {
+  require_object(j, path);
+  const std::set<std::string> fabric = {"F0", "e_A", "k_f"};
+  const std::set<std::string> guards = {"p_min", "h_min", "R_tolerance"};
+  std::set<std::string> allowed(guards);
+  for (const char* name : parameter_names) allowed.insert(name);
+  reject_unknown_keys(j, allowed, path);
+  Parameters p;
+  p.variant = variant;
+  for (int i = 0; i < parameter_count; ++i) {
+    const std::string name = parameter_names[i];
+    const bool optional = guards.count(name) || (variant == Variant::isotropic && fabric.count(name));
+    if (j.contains(name))
+      parameter_by_index(p, i) = number_at(j, name, path);
+    else if (variant == Variant::isotropic && fabric.count(name))
+      parameter_by_index(p, i) = 0.0;
+    else if (!optional)
+      throw InputError(path + "/" + name + ": required parameter is missing");
+  }
+  if (j.contains("h_min")) p.h_min = number_at(j, "h_min", path);
+  if (j.contains("R_tolerance")) p.R_tolerance = number_at(j, "R_tolerance", path);
+  try {
+    validate(p);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+  return p;
+}
+
+integration::Options options_from_json(const json& j, const std::string& path) {
+  require_object(j, path);
+  reject_unknown_keys(j,
+                      {"scheme", "stol", "ftol", "ltol", "min_substep", "max_substeps", "fe_substeps",
+                       "unload_scan_intervals", "reuse_last_substep", "pressure_floor"},
+                      path);
+  integration::Options o;
+  if (j.contains("scheme")) {
+    if (!j["scheme"].is_string()) throw InputError(path + "/scheme: expected a string (FE, ME, RK23, RK45)");
+    try {
+      o.scheme = integration::scheme_from_name(j["scheme"].get<std::string>());
+    } catch (const InputError& e) {
+      throw InputError(path + "/scheme: " + e.what());
+    }
+  }
+  auto positive = [&](const char* key, double& slot, double hi) {
+    if (!j.contains(key)) return;
+    const double v = number_at(j, key, path);
+    if (!(v > 0.0 && v < hi))
+      throw InputError(path + "/" + key + " = " + std::to_string(v) + ": allowed range (0, " + std::to_string(hi) + ")");
+    slot = v;
+  };
+  auto count = [&](const char* key, int& slot, int lo) {
+    if (!j.contains(key)) return;
+    if (!j[key].is_number_integer() || j[key].get<long long>() < lo || j[key].get<long long>() > 100000000)
+      throw InputError(path + "/" + key + ": expected an integer >= " + std::to_string(lo));
+    slot = j[key].get<int>();
+  };
+  positive("stol", o.stol, 1.0);
+  positive("ftol", o.ftol, 1.0);
+  positive("ltol", o.ltol, 1.0);
+  positive("min_substep", o.min_substep, 1.0);
+  count("max_substeps", o.max_substeps, 1);
+  count("fe_substeps", o.fe_substeps, 1);
+  count("unload_scan_intervals", o.unload_scan_intervals, 1);
+  if (j.contains("reuse_last_substep")) {
+    if (!j["reuse_last_substep"].is_boolean()) throw InputError(path + "/reuse_last_substep: expected true or false");
+    o.reuse_last_substep = j["reuse_last_substep"].get<bool>();
+  }
+  if (j.contains("pressure_floor")) {
+    const json& v = j["pressure_floor"];
+    if (v == "reset")
+      o.pressure_floor = integration::PressureFloorPolicy::reset;
+    else if (v == "fail")
+      o.pressure_floor = integration::PressureFloorPolicy::fail;
+    else
+      throw InputError(path + "/pressure_floor: expected \"reset\" or \"fail\"");
+  }
+  return o;
+}
+
+Material Material::from_json(const std::string& text) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError(std::string("material JSON does not parse: ") + e.what());
+  }
+  require_object(j, "");
+  reject_unknown_keys(j, {"model", "parameters", "integrator"}, "");
+  if (!j.contains("parameters")) throw InputError("/parameters: required object is missing");
+  const Variant v = j.contains("model") ? variant_from_json(j["model"], "/model") : Variant::anisotropic;
+  const Parameters p = parameters_from_json(j["parameters"], v, "/parameters");
+  const integration::Options o =
+      j.contains("integrator") ? options_from_json(j["integrator"], "/integrator") : integration::Options{};
+  return Material(p, o);
+}
+
+}  // namespace acst

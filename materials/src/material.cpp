@@ -1,0 +1,113 @@
+#include "acst/material.hpp"
+
+#include "acst/acst_rates.hpp"
+#include "acst/integration/explicit_substepping.hpp"
+
+namespace acst {
+
+using integration::Report;
+using integration::Status;
+
+Material::Material(const Parameters& parameters, const integration::Options& options)
+    : parameters_(parameters), options_(options) {
+  validate(parameters_);
+  if (!(options_.stol > 0.0) || !(options_.ftol > 0.0) || !(options_.min_substep > 0.0) ||
+      !(options_.min_substep < 1.0) || options_.max_substeps < 1 || options_.fe_substeps < 1)
+    throw InputError("integrator options out of range: need stol > 0, ftol > 0, 0 < min_substep < 1, "
+                     "max_substeps >= 1, fe_substeps >= 1");
+}
+
+State Material::initial_state(const Sym& stress, double void_ratio, const Eigen::Vector3d& deposition_direction) const {
+  if (!stress.allFinite()) throw InputError("initial stress is not finite");
+  if (!(mean_stress(stress) >= parameters_.p_min))
+    throw InputError("initial mean stress must be at least p_min = " + std::to_string(parameters_.p_min) + " kPa");
+  if (!(void_ratio > 0.0 && void_ratio < 2.97)) throw InputError("initial void ratio must lie in (0, 2.97)");
+  if (!deposition_direction.allFinite() || !(deposition_direction.norm() > 0.0))
+    throw InputError("deposition direction must be a finite non-zero vector");
+  State s;
+  s.stress = stress;
+  s.void_ratio = void_ratio;
+  s.fabric = initial_fabric(parameters_.F0, deposition_direction);
+  const StressRatioState st = stress_ratio_state(stress, parameters_.c, parameters_.R_tolerance, Sym::Zero());
+  s.H = st.R / st.lode.g;
+  s.substep_hint = 1.0;
+  return s;
+}
+
+namespace {
+
+AcstRates::Vector pack(const State& s) {
+  AcstRates::Vector y;
+  y << s.stress, s.fabric, s.void_ratio;
+  return y;
+}
+
+bool physical(const State& s) {
+  return s.stress.allFinite() && s.fabric.allFinite() && std::isfinite(s.H) && std::isfinite(s.void_ratio) &&
+         s.void_ratio > 0.0 && s.H >= 0.0;
+}
+
+}  // namespace
+
+Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const {
+  Report rep;
+  if (!deps.allFinite()) {
+    rep.status = Status::invalid_input;
+    rep.reason = integration::Reason::non_finite;
+    return rep;
+  }
+  if (!physical(state)) {
+    rep.status = Status::nonphysical_state;
+    rep.reason = integration::Reason::non_finite;
+    return rep;
+  }
+  const AcstRates model(parameters_);
+  AcstRates::Vector y = pack(state);
+  double H = state.H, hint = state.substep_hint;
+  rep = integration::ExplicitSubstepping<AcstRates>(model, options_).integrate(y, H, hint, deps);
+  if (rep.status != Status::ok) return rep;
+  state.stress = AcstRates::stress(y);
+  state.fabric = AcstRates::fabric(y);
+  state.void_ratio = AcstRates::void_ratio(y);
+  state.H = H;
+  state.substep_hint = hint;
+  state.pressure_floor_resets += rep.counters.pressure_floor_resets;
+  if (tangent_out) *tangent_out = tangent(state, rep.plastic, deps);
+  return rep;
+}
+
+// D_ep = D_e - (2G n + sqrt(2/3) K D I) (x) (2G n - K (n:r) I) / [Kp + 2G - sqrt(2/3) K D (n:r)].
+Mat6 Material::tangent(const State& s, bool plastic, const Sym& strain_direction) const {
+  const PlasticQuantities q = plastic_quantities(parameters_, s.stress, s.fabric, s.void_ratio, strain_direction);
+  Mat6 D = elastic_stiffness(q.moduli);
+  if (!plastic) return D;
+  const double G = q.moduli.G, K = q.moduli.K;
+  const Sym a = 2.0 * G * q.ratio.n + std::sqrt(2.0 / 3.0) * K * q.D * identity_tensor();
+  const Sym b = 2.0 * G * q.ratio.n - K * q.n_r * identity_tensor();
+  const double den = q.Kp + 2.0 * G - std::sqrt(2.0 / 3.0) * K * q.D * q.n_r;
+  // Only a loading direction contributes; at a non-positive denominator keep the elastic part.
+  if (den > 0.0 && contract(b, strain_direction) > 0.0) D -= a * contraction_row(b) / den;
+  return D;
+}
+
+Diagnostics Material::diagnostics(const State& s, const Sym& strain_direction) const {
+  const PlasticQuantities q = plastic_quantities(parameters_, s.stress, s.fabric, s.void_ratio, strain_direction);
+  Diagnostics d;
+  d.p = q.p;
+  d.q = std::sqrt(1.5) * norm(deviator(s.stress));
+  d.R = q.ratio.R;
+  d.sin3theta = q.ratio.sin3theta;
+  d.g = q.ratio.lode.g;
+  d.psi = q.psi;
+  d.zeta = q.zeta;
+  d.A = q.A;
+  d.fabric_norm = norm(s.fabric);
+  d.critical_void_ratio = critical_void_ratio(parameters_, q.p);
+  d.D = q.D;
+  d.Kp = q.Kp;
+  d.G = q.moduli.G;
+  d.K = q.moduli.K;
+  return d;
+}
+
+}  // namespace acst
