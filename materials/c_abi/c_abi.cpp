@@ -8,6 +8,7 @@
 
 #include "abi_convention.hpp"
 #include "acst.h"
+#include "acst/fabric.hpp"
 #include "acst/material.hpp"
 #include "c_abi_support.hpp"
 #include "state_layout.hpp"
@@ -114,6 +115,27 @@ acst_status acst_initial_state(double* statev, double* stress_out, const acst_mo
     stress_from_model(s.stress, stress_out);
     return ok_status();
   })
+}
+
+acst_status acst_bedding_direction(double* b, double alpha_degrees, int major_axis, int minor_axis,
+                                   double minor_sign) {
+  ACST_REQUIRE(b, "acst_bedding_direction: output pointer is NULL");
+  ACST_REQUIRE(major_axis >= 0 && major_axis < 3 && minor_axis >= 0 && minor_axis < 3 && major_axis != minor_axis,
+               "acst_bedding_direction: axes must be two different indices in 0..2");
+  ACST_REQUIRE(std::isfinite(alpha_degrees) && (minor_sign == 1.0 || minor_sign == -1.0),
+               "acst_bedding_direction: alpha must be finite and minor_sign +1 or -1");
+  const Eigen::Vector3d v = acst::bedding_direction(alpha_degrees, major_axis, minor_axis, minor_sign);
+  for (int i = 0; i < 3; ++i) b[i] = v[i];
+  return ok_status();
+}
+
+acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst_model* model,
+                                                  double relative_density) {
+  ACST_REQUIRE(void_ratio && model, "acst_void_ratio_from_relative_density: a pointer argument is NULL");
+  ACST_REQUIRE(relative_density >= 0.0 && relative_density <= 1.0,
+               "acst_void_ratio_from_relative_density: relative density must lie in [0, 1]");
+  *void_ratio = acst::void_ratio_from_relative_density(model->material.parameters(), relative_density);
+  return ok_status();
 }
 
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,

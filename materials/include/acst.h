@@ -76,6 +76,17 @@ const char* acst_state_name(const acst_model* model, int i);
 acst_status acst_initial_state(double* statev, double* stress_out, const acst_model* model, const double* stress0,
                                double void_ratio, const double* deposition_direction);
 
+/* Deposition direction b (unit) for a bedding angle alpha in degrees: the angle between b and
+ * the major loading axis, b = cos(alpha) e_major + sin(alpha) e_minor (axes 0, 1, 2). For
+ * the plane-strain footing frame (x horizontal, y vertical) use major = 1, minor = 0 and a
+ * negative alpha sense by passing minor_sign = -1: b = (-sin alpha, cos alpha, 0). */
+acst_status acst_bedding_direction(double* b, double alpha_degrees, int major_axis, int minor_axis,
+                                   double minor_sign);
+
+/* Void ratio from a relative density Dr in [0, 1]: e = e_max - Dr (e_max - e_min). */
+acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst_model* model,
+                                                  double relative_density);
+
 /* One stress update: stress[6] and statev[ACST_NSTATV] in and out, dstrain[6] in.
  * tangent (36 doubles) and counters are optional (NULL). On any failure stress and statev are
  * left unchanged. */

@@ -15,6 +15,19 @@ inline Sym initial_fabric(double F0, const Eigen::Vector3d& deposition_direction
   return F0 * (3.0 * bb - identity_tensor()) / std::sqrt(6.0);
 }
 
+// Deposition direction b for a bedding angle alpha (degrees): the angle between b and the major
+// loading axis, b rotated from that axis towards the minor one about the third (intermediate)
+// axis: b = cos(alpha) e_major + sin(alpha) e_minor (axes 0, 1, 2 = x1, x2, x3).
+// Element tests: major = 0 (axial), minor = 2. Plane-strain footings (x horizontal, y vertical):
+// major = 1 (y), minor = 0 with alpha measured towards -x, i.e. b = (-sin alpha, cos alpha, 0).
+inline Eigen::Vector3d bedding_direction(double alpha_degrees, int major_axis, int minor_axis, double minor_sign = 1.0) {
+  const double a = alpha_degrees * M_PI / 180.0;
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  b[major_axis] = std::cos(a);
+  b[minor_axis] = minor_sign * std::sin(a);
+  return b;
+}
+
 // A = F:n, the fabric anisotropy variable.
 inline double fabric_anisotropy_variable(const Sym& F, const Sym& n) { return contract(F, n); }
 
