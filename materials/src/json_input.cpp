@@ -64,6 +64,8 @@ Parameters parameters_from_json(const json& j, Variant variant, const std::strin
   if (j.contains("R_tolerance")) p.R_tolerance = number_at(j, "R_tolerance", path);
   try {
     validate(p);
+  } catch (const ParameterRangeError& e) {
+    throw InputError(path + "/" + e.parameter + ": " + e.what());
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
@@ -125,7 +127,7 @@ Material Material::from_json(const std::string& text) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
     throw InputError(std::string("material JSON does not parse: ") + e.what());
   }
   require_object(j, "");

@@ -31,7 +31,7 @@ void check(const Range& r, double v) {
   if (!ok) {
     std::ostringstream os;
     os << "parameter '" << r.name << "' = " << v << " is outside its allowed range " << describe(r);
-    throw InputError(os.str());
+    throw ParameterRangeError(os.str(), r.name);
   }
 }
 
@@ -43,7 +43,9 @@ void validate(const Parameters& p) {
   check({"G0", 0, true, inf, true}, p.G0);
   check({"nu", 0, false, 0.5, true}, p.nu);
   check({"Mc", 0, true, 3, false}, p.Mc);
-  check({"c", 0, true, 1, false}, p.c);
+  // Below about 0.7 the deviatoric section of g(theta) is no longer convex (below sqrt(2) - 1
+  // g(compression) is not even 1): such c would give non-unique loading directions.
+  check({"c", 0.7, false, 1, false}, p.c);
   check({"e_Gamma", 0, true, 2.97, true}, p.e_Gamma);
   check({"lambda_c", 0, true, inf, true}, p.lambda_c);
   check({"xi", 0, true, 2, false}, p.xi);

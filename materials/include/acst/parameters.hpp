@@ -2,6 +2,7 @@
 // ACST material constants and numerical guards (kPa, dimensionless otherwise).
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace acst {
 
@@ -44,6 +45,12 @@ struct Parameters {
 // Thrown for any invalid input; the message names the offending key and the allowed range.
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// A value outside its range; `parameter` names it (for JSON paths).
+struct ParameterRangeError : InputError {
+  ParameterRangeError(const std::string& message, std::string name) : InputError(message), parameter(std::move(name)) {}
+  std::string parameter;
 };
 
 // Checks every value against its physical range; throws InputError naming the first bad one.
