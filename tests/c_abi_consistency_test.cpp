@@ -347,8 +347,7 @@ TEST(CAbiConsistency, UmatFailingIncrementSetsPnewdtBelowOneAndLeavesStateUntouc
   const std::string text = acst::test::read_text(guide_path);
   std::vector<double> props = props_from_json(text);
   // STOL = 1e-20 lies below the error floor of the substepping (1e-16): every plastic substep is
-  // rejected until the substep falls below its minimum, an honest step-reduction failure. (PROPS
-  // cannot select pressure_floor = fail.)
+  // rejected until the substep falls below its minimum, an honest step-reduction failure.
   props[19] = 1e-20;
   ModelHandle h(text);
   double stress[6], statev[ACST_NSTATV];
@@ -363,6 +362,32 @@ TEST(CAbiConsistency, UmatFailingIncrementSetsPnewdtBelowOneAndLeavesStateUntouc
   EXPECT_LT(umat.pnewdt, 1.0);
   EXPECT_EQ(std::vector<double>(stress, stress + 6), stress_before);
   EXPECT_EQ(std::vector<double>(statev, statev + ACST_NSTATV), statev_before);
+}
+
+// PROPS(21) = 1 selects pressure_floor = fail: an extension far below p_min asks for a smaller step.
+TEST(CAbiConsistency, UmatPressureFloorFailOptionRequestsStepReduction) {
+  const std::string text = acst::test::read_text(guide_path);
+  std::vector<double> props = props_from_json(text);
+  props.push_back(1.0);  // PROPS(21): fail
+  ModelHandle h(text);
+  double stress[6], statev[ACST_NSTATV];
+  const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1, 0, 0};
+  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  const std::vector<double> stress_before(stress, stress + 6);
+  const double extension[6] = {0.01, 0.01, 0.01, 0, 0, 0};
+  UmatCall umat;
+  umat(stress, statev, extension, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  EXPECT_GT(umat.pnewdt, 0.0);
+  EXPECT_LT(umat.pnewdt, 1.0);
+  EXPECT_EQ(std::vector<double>(stress, stress + 6), stress_before);
+  props.back() = 0.0;  // reset (the default): the point goes to the isotropic p_min state
+  umat(stress, statev, extension, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  EXPECT_EQ(umat.pnewdt, 1.0);
+  const double p_min = nlohmann::json::parse(text).at("parameters").at("p_min").get<double>();
+  for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(stress[i], -p_min);
+  props.back() = 0.5;  // neither 0 nor 1
+  umat(stress, statev, extension, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  EXPECT_EQ(umat.pnewdt, 0.0);
 }
 
 TEST(CAbiConsistency, UmatRejectsBadNtensAndShortPropsWithPnewdtZero) {

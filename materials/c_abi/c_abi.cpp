@@ -153,7 +153,7 @@ acst_status acst_update_batch(double* stress, size_t stress_stride, double* stat
                               int* point_status, acst_counters* counters, const acst_model* model, size_t n,
                               const double* dstrain, size_t dstrain_stride) {
   ACST_REQUIRE(model && (n == 0 || (stress && statev && dstrain)), "acst_update_batch: a required pointer is NULL");
-  ACST_REQUIRE(stress_stride >= 6 && statev_stride >= (size_t)state_size && dstrain_stride >= 6,
+  ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= (size_t)state_size && dstrain_stride >= 6),
                "acst_update_batch: strides must be at least 6 (stress, strain) and ACST_NSTATV (state)");
   ACST_GUARD({
     acst_status first = ok_status();

@@ -1,7 +1,8 @@
 // Abaqus-compatible UMAT entry point over the same update path as acst_update.
 //
 // PROPS(1..18): G0 nu Mc c e_Gamma lambda_c xi d1 m h1 h2 n e_A F0 k_f e_max e_min p_min
-// PROPS(19) (optional): scheme, 0 FE-1, 1 ME (default), 2 RK23, 3 RK45;  PROPS(20) (optional): STOL.
+// PROPS(19) (optional): scheme, 0 FE-1, 1 ME (default), 2 RK23, 3 RK45;  PROPS(20) (optional): STOL;
+// PROPS(21) (optional): pressure floor, 0 reset to p_min (default), 1 fail with PNEWDT < 1.
 // STATEV(1..10): as acst_state_name (F11..F23, void ratio, H, substep hint, floor resets);
 // the host initialises them (acst_initial_state gives the values).
 // NTENS 6 (11 22 33 12 13 23) or 4 (11 22 33 12). Abaqus convention: tension positive,
@@ -24,6 +25,11 @@ acst::Material material_from_props(const double* props, int nprops) {
     o.scheme = static_cast<acst::integration::Scheme>(code);
   }
   if (nprops > 19) o.stol = props[19];
+  if (nprops > 20) {
+    if (props[20] != 0.0 && props[20] != 1.0) throw acst::InputError("PROPS(21) must be 0 (reset) or 1 (fail)");
+    o.pressure_floor = props[20] == 0.0 ? acst::integration::PressureFloorPolicy::reset
+                                         : acst::integration::PressureFloorPolicy::fail;
+  }
   return acst::Material(p, o);
 }
 
