@@ -153,11 +153,8 @@ TEST(ParametersJson, SyntaxErrorsAreInputErrors) {
   expect_input_error("{ \"model\": \"ACST\" } trailing", {"does not parse"});
 }
 
-// DISABLED: fails with the library as it is. A number outside the double range (1e400) makes
-// nlohmann::json throw json::out_of_range (406, "number overflow"), which Material::from_json
-// does not catch (it catches json::parse_error only, materials/src/json_input.cpp), so a
-// caller expecting acst::InputError gets another exception type. Enable once from_json
-// converts every nlohmann::json::exception into InputError.
+// A number outside the double range (1e400) makes nlohmann::json throw out_of_range (406); the
+// caller must still get an acst::InputError.
 TEST(ParametersJson, NumberOverflowIsAnInputError) {
   std::string text = acst::test::read_text(guide_file);
   text.replace(text.find("\"G0\": 125"), 9, "\"G0\": 1e400");

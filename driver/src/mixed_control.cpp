@@ -18,11 +18,31 @@ bool converged_residual(const LinearControl& ctl, const Sym& r, double stress_sc
   return true;
 }
 
+// Partial pivoting is about three times cheaper than full pivoting on 6 x 6; with the rows
+// scaled to a largest entry of 1, a pivot below 1e-12 of the largest one counts as singular.
+bool singular(const Eigen::PartialPivLU<Mat6>& lu) {
+  const auto d = lu.matrixLU().diagonal().cwiseAbs();
+  return !d.allFinite() || !(d.minCoeff() > 1e-12 * d.maxCoeff());
+}
+
 }  // namespace
+
+const char* failure_text(IncrementFailure f) {
+  switch (f) {
+    case IncrementFailure::none: return "converged";
+    case IncrementFailure::material: return "the material update failed";
+    case IncrementFailure::singular_jacobian:
+      return "singular Newton matrix A D + B (the control leaves a component free at this state)";
+    case IncrementFailure::not_converged: return "Newton iteration did not converge";
+    case IncrementFailure::non_finite: return "Newton iterate became non-finite";
+  }
+  return "?";
+}
 
 IncrementResult solve_increment(const Material& material, State& state, const LinearControl& ctl, const Sym& guess,
                                 const NewtonOptions& o) {
   IncrementResult res;
+  res.failure = IncrementFailure::not_converged;
   Sym deps = guess;
   const double stress_scale = std::max(mean_stress(state.stress), atmospheric_pressure);
   integration::Counters work;
@@ -32,21 +52,41 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
     Mat6 D;
     res.material = material.update(trial, deps, &D);
     work += res.material.counters;
-    if (res.material.status != integration::Status::ok) break;
+    if (res.material.status != integration::Status::ok) {
+      res.failure = IncrementFailure::material;
+      break;
+    }
     const Sym r = ctl.A * (trial.stress - state.stress) + ctl.B * deps - ctl.c;
-    const Mat6 J = ctl.A * D + ctl.B;
-    const Eigen::FullPivLU<Mat6> lu(J);
-    if (!lu.isInvertible()) break;  // a component is left free: the control is singular
-    const Sym correction = -lu.solve(r);
+    // Rows scaled by their largest entry, so that stress rows (~ stiffness) and strain rows (~1) weigh alike.
+    Mat6 J = ctl.A * D + ctl.B;
+    Sym rs = r;
+    for (int i = 0; i < 6; ++i) {
+      const double m = J.row(i).cwiseAbs().maxCoeff();
+      if (m > 0.0) {
+        J.row(i) /= m;
+        rs[i] /= m;
+      }
+    }
+    const Eigen::PartialPivLU<Mat6> lu(J);
+    if (singular(lu)) {  // a component is left free: the control is singular
+      res.failure = IncrementFailure::singular_jacobian;
+      break;
+    }
+    const Sym correction = -lu.solve(rs);
     const bool small_correction = correction.cwiseAbs().maxCoeff() <= o.strain_tolerance + 1e-8 * deps.cwiseAbs().maxCoeff();
     if (converged_residual(ctl, r, stress_scale, o) && small_correction) {
       state = trial;
       res.converged = true;
+      res.failure = IncrementFailure::none;
       res.strain_increment = deps;
+      res.tangent = D;
       break;
     }
     deps += correction;
-    if (!deps.allFinite()) break;
+    if (!deps.allFinite()) {
+      res.failure = IncrementFailure::non_finite;
+      break;
+    }
   }
   res.material.counters = work;
   return res;

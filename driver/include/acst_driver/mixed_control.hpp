@@ -20,15 +20,29 @@ struct NewtonOptions {
   double strain_tolerance = 1e-12; // residual of a pure strain row, and absolute strain correction
 };
 
+// Why an increment did not converge.
+enum class IncrementFailure {
+  none,
+  material,           // the material update failed (its report says why)
+  singular_jacobian,  // A D + B is singular: the control leaves a component free at this state
+  not_converged,      // max_iterations reached
+  non_finite,         // the strain iterate became NaN or inf
+};
+const char* failure_text(IncrementFailure f);
+
 struct IncrementResult {
   bool converged = false;
   int iterations = 0;
-  integration::Report material;  // report of the accepted material call (counters summed over iterations)
+  IncrementFailure failure = IncrementFailure::none;
+  integration::Report material;  // report of the last material call (counters summed over iterations)
   Sym strain_increment = Sym::Zero();
+  Mat6 tangent = Mat6::Zero();   // material tangent at the accepted state (a predictor for the next increment)
 };
 
 // Advances `state` by one increment; `guess` is the starting strain increment (for example the
-// previous one). On failure the state is unchanged.
+// previous one). Converged only when every row's residual is below its tolerance AND the last
+// Newton correction is below the strain tolerance (plus 1e-8 of the increment). On failure the
+// state is unchanged.
 IncrementResult solve_increment(const Material& material, State& state, const LinearControl& control,
                                 const Sym& guess, const NewtonOptions& options = {});
 

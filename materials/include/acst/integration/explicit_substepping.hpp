@@ -52,12 +52,30 @@ class ExplicitSubstepping {
   const Model& model_;
   const Options& opt_;
 
-  // Heun's two-stage secant update for the pressure-dependent elastic law.
-  Vector elastic_update(const Vector& y, const Sym& deps, Counters& c) const {
-    Vector k1, k2;
-    model_.elastic_rate(y, deps, k1, c);
-    model_.elastic_rate(y + k1, deps, k2, c);
-    return y + 0.5 * (k1 + k2);
+  // Heun's two-stage secant update of the pressure-dependent elastic law, substepped under the
+  // same STOL and error norm as the plastic part (one substep for ordinary increments). The
+  // elastic error falls with the cube of the substep, so 1e-3 of the increment is always
+  // enough; the floor keeps an unreachable STOL from costing a million substeps.
+  Vector elastic_update(const Vector& y0, const Sym& deps, Counters& c) const {
+    const double smallest = std::max(opt_.min_substep, 1e-3);
+    Vector y = y0, k1, k2;
+    double T = 0.0, dT = 1.0;
+    while (T < 1.0) {
+      const double h = std::min(dT, 1.0 - T);
+      model_.elastic_rate(y, deps, k1, c);
+      model_.elastic_rate(y + h * k1, deps, k2, c);
+      const Vector y_new = y + (0.5 * h) * (k1 + k2);
+      const double R = std::max(model_.relative_error(y_new, (0.5 * h) * (k2 - k1)), 1e-16);
+      const double factor = 0.9 * std::sqrt(opt_.stol / R);
+      if (R > opt_.stol && h > smallest) {
+        dT = std::max(h * std::max(factor, 0.1), smallest);
+        continue;
+      }
+      y = y_new;
+      T = h >= 1.0 - T ? 1.0 : T + h;
+      dT = std::max(h * std::min(factor, 2.0), smallest);
+    }
+    return y;
   }
 
   double yield_at(const Vector& y, double H, const Sym& deps, double alpha, Counters& c) const {
@@ -72,14 +90,24 @@ class ExplicitSubstepping {
     if (f0 < -opt_.ftol) return pegasus(y, H, deps, 0.0, f0, 1.0, f1, c);
     if (model_.unloading_cosine(y, trial - y, deps) >= -opt_.ltol) return 0.0;
     ++c.unload_reload;
-    double a = 0.0, fa = f0;
-    const int n = std::max(opt_.unload_scan_intervals, 1);
-    for (int j = 1; j <= n; ++j) {
-      const double b = double(j) / n;
-      const double fb = j == n ? f1 : yield_at(y, H, deps, b, c);
-      if (fb > opt_.ftol) return fa < -opt_.ftol ? pegasus(y, H, deps, a, fa, b, fb, c) : a;
-      a = b;
-      fa = fb;
+    // Scan [lo, hi] in n steps for the first point outside; if the very first step is already
+    // outside, the path's inside stretch is shorter than one step: scan that step again, finer.
+    const int n = std::max(opt_.unload_scan_intervals, 2);
+    double lo = 0.0, hi = 1.0;
+    for (int level = 0; level < 4; ++level) {
+      double a = lo, fa = f0;
+      for (int j = 1; j <= n; ++j) {
+        const double b = lo + (hi - lo) * j / n;
+        const double fb = b == 1.0 ? f1 : yield_at(y, H, deps, b, c);
+        if (fb > opt_.ftol) {
+          if (fa < -opt_.ftol) return pegasus(y, H, deps, a, fa, b, fb, c);
+          if (j > 1) return a;
+          hi = b;
+          break;
+        }
+        a = b;
+        fa = fb;
+      }
     }
     return 0.0;
   }

@@ -1,0 +1,221 @@
+// Time per stress update of the explicit integrators (FE-1, ME, RK23, RK45 at STOL 1e-4) and of
+// the C ABI (acst_update, ME), guide set, single thread.
+//   elastic: 1000 small unloading increments (1e-6 axial, reversed drained direction) from a
+//            state inside the cone (dense sand, 2 % axial strain, then unloaded by 5e-4);
+//   plastic: drained triaxial compression from 100 kPa, 1000 increments of 1e-4 axial strain
+//            (to 10 %), dense (e0 0.67) and loose (e0 0.9), replayed as strain increments.
+// Each figure is the median over 21 repetitions of the whole sequence, divided by its length.
+// Usage: bench_stress_update [output_dir]   (writes stress_update.csv there; table on stdout)
+#include <cstdio>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "acst.h"
+#include "bench_support.hpp"
+
+using namespace acst;
+using integration::Scheme;
+
+namespace {
+
+constexpr int kRepetitions = 21;
+constexpr int kElasticUpdates = 1000;
+
+struct Sequence {
+  State start;
+  std::vector<Sym> increments;
+};
+
+struct Timing {
+  double ns_per_update = 0.0;
+  double substeps_per_update = 0.0;
+  double evals_per_update = 0.0;
+  int plastic_calls = 0;
+  bool ok = true;
+};
+
+// Median over repetitions of the time of the whole sequence, per update.
+Timing time_sequence(const Material& m, const Sequence& seq) {
+  Timing t;
+  std::vector<double> times;
+  integration::Counters work;
+  for (int rep = 0; rep < kRepetitions; ++rep) {
+    State s = seq.start;
+    int plastic = 0;
+    bool ok = true;
+    integration::Counters c;
+    const double t0 = bench::now_seconds();
+    for (const Sym& deps : seq.increments) {
+      const integration::Report r = m.update(s, deps);
+      ok &= r.status == integration::Status::ok;
+      plastic += r.plastic;
+      c += r.counters;
+    }
+    times.push_back(bench::now_seconds() - t0);
+    if (rep == 0) {
+      work = c;
+      t.plastic_calls = plastic;
+      t.ok = ok;
+    }
+  }
+  const double n = seq.increments.size();
+  t.ns_per_update = bench::median(times) / n * 1e9;
+  t.substeps_per_update = (work.substeps_accepted + work.substeps_rejected) / n;
+  t.evals_per_update = work.rate_evaluations / n;
+  return t;
+}
+
+// The same sequence through the C ABI (tension positive, engineering shear).
+struct AbiTiming {
+  double ns_per_update = 0.0;
+  double max_difference = 0.0;  // |stress_abi + stress_cpp| / |stress_cpp| at the end of the sequence
+  bool ok = true;
+};
+
+AbiTiming time_abi(const acst_model* model, const Material& m, const Sequence& seq, bool with_tangent) {
+  AbiTiming t;
+  double statev0[ACST_NSTATV], stress0[6];
+  Sym start_abi = -seq.start.stress;  // the C ABI convention: tension positive
+  const double dir[3] = {1.0, 0.0, 0.0};
+  // The C ABI builds its own initial state; start from the same stress, void ratio and fabric
+  // by reproducing the state variables (layout: docs/c-abi.md, state_layout.hpp).
+  for (int i = 0; i < 6; ++i) stress0[i] = start_abi[i];
+  acst_status st = acst_initial_state(statev0, stress0, model, stress0, seq.start.void_ratio, dir);
+  if (st.code != ACST_OK) {
+    std::fprintf(stderr, "acst_initial_state: %s\n", st.message);
+    t.ok = false;
+    return t;
+  }
+  for (int i = 0; i < 6; ++i) statev0[i] = seq.start.fabric[i];
+  statev0[6] = seq.start.void_ratio;
+  statev0[7] = seq.start.H;
+  statev0[8] = seq.start.substep_hint;
+  std::vector<std::array<double, 6>> dstrain(seq.increments.size());
+  for (size_t k = 0; k < seq.increments.size(); ++k)
+    for (int i = 0; i < 6; ++i) dstrain[k][i] = -seq.increments[k][i] * (i < 3 ? 1.0 : 2.0);
+  std::vector<double> times;
+  double stress[6], statev[ACST_NSTATV], tangent[36];
+  for (int rep = 0; rep < kRepetitions; ++rep) {
+    std::copy(stress0, stress0 + 6, stress);
+    std::copy(statev0, statev0 + ACST_NSTATV, statev);
+    const double t0 = bench::now_seconds();
+    for (const auto& d : dstrain) {
+      st = acst_update(stress, statev, with_tangent ? tangent : nullptr, nullptr, model, d.data());
+      t.ok &= st.code == ACST_OK;
+    }
+    times.push_back(bench::now_seconds() - t0);
+  }
+  t.ns_per_update = bench::median(times) / dstrain.size() * 1e9;
+  State s = seq.start;
+  for (const Sym& deps : seq.increments) m.update(s, deps);
+  Sym abi_end;
+  for (int i = 0; i < 6; ++i) abi_end[i] = -stress[i];
+  t.max_difference = norm(abi_end - s.stress) / norm(s.stress);
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const std::string out = bench::output_dir(argc, argv);
+    const Material guide = bench::guide_material();
+
+    // Plastic sequences: drained triaxial, 1000 x 1e-4 axial.
+    std::vector<std::pair<std::string, Sequence>> plastic;
+    for (auto [name, e0] : {std::pair<const char*, double>{"dense", 0.67}, {"loose", 0.9}}) {
+      Sequence seq;
+      seq.start = bench::isotropic_sample(guide, 100.0, e0);
+      seq.increments = bench::drained_triaxial_strain_path(guide, seq.start, 1e-4, 1000);
+      plastic.emplace_back(name, seq);
+    }
+    // Elastic sequence: dense sand loaded to 2 % axial strain, unloaded by 5e-4, then 1000
+    // further unloading increments of 1e-6 (all inside the cone).
+    Sequence elastic;
+    {
+      State s = bench::isotropic_sample(guide, 100.0, 0.67);
+      const std::vector<Sym> load = bench::drained_triaxial_strain_path(guide, s, 1e-3, 20);
+      s = bench::replay(bench::with_integrator(guide, Scheme::rk45, 1e-10), s, load).states.back();
+      const Sym direction = load.back() / load.back()[0];
+      guide.update(s, -5e-4 * direction);
+      elastic.start = s;
+      elastic.increments.assign(kElasticUpdates, -1e-6 * direction);
+    }
+
+    struct Row {
+      std::string scheme;
+      Timing elastic, dense, loose;
+    };
+    std::vector<Row> rows;
+    const std::vector<std::pair<std::string, Material>> materials = {
+        {"FE-1", bench::with_integrator(guide, Scheme::forward_euler, 1e-4, 1)},
+        {"ME", bench::with_integrator(guide, Scheme::modified_euler, 1e-4)},
+        {"RK23", bench::with_integrator(guide, Scheme::rk23, 1e-4)},
+        {"RK45", bench::with_integrator(guide, Scheme::rk45, 1e-4)},
+    };
+    for (const auto& [name, m] : materials) {
+      std::fprintf(stderr, "timing %s ...\n", name.c_str());
+      rows.push_back({name, time_sequence(m, elastic), time_sequence(m, plastic[0].second),
+                      time_sequence(m, plastic[1].second)});
+      if (rows.back().elastic.plastic_calls != 0) std::fprintf(stderr, "warning: an 'elastic' update was plastic\n");
+    }
+
+    // C ABI, ME at STOL 1e-4 (the guide file's integrator section).
+    acst_model* model = nullptr;
+    const acst_status st = acst_model_create(&model, bench::guide_json().c_str());
+    if (st.code != ACST_OK) throw std::runtime_error(std::string("acst_model_create: ") + st.message);
+    const Material me = materials[1].second;
+    const AbiTiming abi_el = time_abi(model, me, elastic, false);
+    const AbiTiming abi_dense = time_abi(model, me, plastic[0].second, false);
+    const AbiTiming abi_loose = time_abi(model, me, plastic[1].second, false);
+    const AbiTiming abi_dense_t = time_abi(model, me, plastic[0].second, true);
+    const AbiTiming abi_el_t = time_abi(model, me, elastic, true);
+    acst_model_destroy(model);
+
+    std::printf("Stress update cost, guide set, STOL 1e-4, median of %d repetitions, single thread\n", kRepetitions);
+    std::printf("elastic: %d unloading increments of 1e-6 inside the cone; plastic: drained triaxial, 1000 x 1e-4 "
+                "axial from 100 kPa\n\n",
+                kElasticUpdates);
+    std::printf("| scheme | ns/update elastic | ns/update plastic dense | ns/update plastic loose | substeps/update "
+                "(dense, loose) | rate evals/update (dense, loose) |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|\n");
+    std::FILE* csv = std::fopen((out + "/stress_update.csv").c_str(), "w");
+    std::fprintf(csv, "scheme,ns_elastic,ns_plastic_dense,ns_plastic_loose,substeps_dense,substeps_loose,evals_dense,"
+                      "evals_loose,evals_elastic,status\n");
+    for (const Row& r : rows) {
+      const bool ok = r.elastic.ok && r.dense.ok && r.loose.ok;
+      std::printf("| %s | %.0f | %.0f | %.0f | %.2f, %.2f | %.2f, %.2f |%s\n", r.scheme.c_str(),
+                  r.elastic.ns_per_update, r.dense.ns_per_update, r.loose.ns_per_update, r.dense.substeps_per_update,
+                  r.loose.substeps_per_update, r.dense.evals_per_update, r.loose.evals_per_update,
+                  ok ? "" : " FAILED CALLS");
+      std::fprintf(csv, "%s,%.1f,%.1f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%s\n", r.scheme.c_str(), r.elastic.ns_per_update,
+                   r.dense.ns_per_update, r.loose.ns_per_update, r.dense.substeps_per_update,
+                   r.loose.substeps_per_update, r.dense.evals_per_update, r.loose.evals_per_update,
+                   r.elastic.evals_per_update, ok ? "ok" : "failed");
+    }
+    const bool abi_ok = abi_el.ok && abi_dense.ok && abi_loose.ok && abi_dense_t.ok && abi_el_t.ok;
+    std::printf("| C ABI acst_update, ME | %.0f | %.0f | %.0f | (as ME) | (as ME) |%s\n", abi_el.ns_per_update,
+                abi_dense.ns_per_update, abi_loose.ns_per_update, abi_ok ? "" : " FAILED CALLS");
+    std::printf("| C ABI acst_update, ME, with tangent | %.0f | %.0f | - | (as ME) | (as ME) |\n",
+                abi_el_t.ns_per_update, abi_dense_t.ns_per_update);
+    std::fprintf(csv, "C_ABI_ME,%.1f,%.1f,%.1f,,,,,,%s\n", abi_el.ns_per_update, abi_dense.ns_per_update,
+                 abi_loose.ns_per_update, abi_ok ? "ok" : "failed");
+    std::fprintf(csv, "C_ABI_ME_tangent,%.1f,%.1f,,,,,,,%s\n", abi_el_t.ns_per_update, abi_dense_t.ns_per_update,
+                 abi_ok ? "ok" : "failed");
+    std::fclose(csv);
+    std::printf("\nC ABI end stress vs C++ end stress (relative): elastic %.1e, dense %.1e, loose %.1e\n",
+                abi_el.max_difference, abi_dense.max_difference, abi_loose.max_difference);
+    const Row& me_row = rows[1];
+    std::printf("Targets (ME, STOL 1e-4): plastic <= 2000 ns: dense %s (%.0f), loose %s (%.0f); elastic <= 200 ns: %s "
+                "(%.0f)\n",
+                me_row.dense.ns_per_update <= 2000 ? "met" : "MISSED", me_row.dense.ns_per_update,
+                me_row.loose.ns_per_update <= 2000 ? "met" : "MISSED", me_row.loose.ns_per_update,
+                me_row.elastic.ns_per_update <= 200 ? "met" : "MISSED", me_row.elastic.ns_per_update);
+    std::printf("wrote %s/stress_update.csv\n", out.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_stress_update: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

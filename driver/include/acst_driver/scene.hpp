@@ -1,0 +1,121 @@
+#pragma once
+// An element test as read from its JSON scene (docs/element-tests.md): material, initial state,
+// steps reduced to six linear rows A d_sigma + B d_eps = c each, solver settings and output.
+// Everything here is in the model convention (compression positive, tensor shear strain,
+// strain as a fraction); the JSON reader converts from the scene's units (percent, engineering
+// shear) in one place.
+#include <Eigen/Core>
+#include <array>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "acst/material.hpp"
+#include "acst_driver/mixed_control.hpp"
+
+namespace acst::driver {
+
+// Thrown for any invalid scene; the message starts with the JSON path (e.g. /steps/2/exit/q_above).
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Six rows of A d_sigma + B d_eps = c over a step. A row's `value` is either its change over the
+// segment, or (absolute) the value its expression A sigma + B eps must reach at the end of the
+// segment, with eps the strain since the start of the test.
+struct ControlRows {
+  Mat6 A = Mat6::Zero();
+  Mat6 B = Mat6::Zero();
+  Sym value = Sym::Zero();
+  std::array<bool, 6> absolute{};
+  std::array<std::string, 6> names;  // what each row controls, for messages ("eps_11", "p", ...)
+};
+
+// A piece of a step with its own rows and number of increments (a strain path read from CSV
+// gives one segment per row of the file; every other step has one).
+struct Segment {
+  ControlRows rows;
+  int increments = 1;
+};
+
+// Quantities an exit condition can watch (output convention: q and the stress ratio signed,
+// negative in extension; strains in percent, compression positive).
+enum class ExitQuantity { q, stress_ratio, p, axial_strain_pct, volumetric_strain_pct, excess_pore_pressure };
+
+struct ExitCondition {
+  ExitQuantity quantity = ExitQuantity::q;
+  bool above = true;  // met when the quantity is >= threshold (above) or <= threshold (below)
+  double threshold = 0.0;
+  std::string key;    // JSON key, e.g. "q_above"
+  std::string path;   // JSON path of the key
+};
+
+struct Step {
+  std::string path;   // JSON path of the step, e.g. /steps/2
+  std::string kind;   // preset name, "control" or "constraints"
+  std::vector<Segment> segments;
+  std::vector<ExitCondition> exits;
+  bool undrained = false;           // count the excess pore pressure (total lateral stress held)
+  std::optional<Sym> newton_guess;  // first Newton guess of the first increment (reproducers)
+};
+
+// A plain step is a block of one step run once; a repeat block runs its steps `cycles` times
+// unless one of its own exit conditions ends it first.
+struct Block {
+  std::string path;
+  bool repeat = false;
+  int cycles = 1;
+  std::vector<Step> steps;
+  std::vector<ExitCondition> exits;
+};
+
+struct InitialState {
+  Sym stress = Sym::Zero();
+  double void_ratio = 0.0;
+  Eigen::Vector3d deposition_direction = Eigen::Vector3d::UnitX();
+  double bedding_angle_deg = 0.0;  // for the CSV header (NaN when a direction was given)
+  // Optional full state (reproducers): fabric tensor, cone size H, substep hint.
+  std::optional<Sym> fabric;
+  std::optional<double> H;
+  std::optional<double> substep_hint;
+};
+
+struct SolverSettings {
+  NewtonOptions newton;
+  int max_halvings = 12;  // cut-back: an increment may be halved this many times
+};
+
+struct OutputSpec {
+  std::string directory = "results/element";  // relative to the current working directory
+  std::string name;                            // file stem; default: the scene file's stem
+  int every = 1;                               // write every n-th increment (and every step end)
+  bool plot = true;
+};
+
+struct Scene {
+  std::string source;     // scene file (empty when parsed from text)
+  std::string base_dir;   // relative file names in the scene resolve against this directory
+  nlohmann::json material_json;  // the effective material object {model, parameters, integrator}
+  std::string material_source;   // "inline" or the file it came from
+  std::optional<Material> material;
+  InitialState initial;
+  std::vector<Block> blocks;
+  SolverSettings solver;
+  std::vector<std::string> lab_data;  // resolved paths
+  OutputSpec output;
+};
+
+// Reads and validates a scene file. Relative paths inside it (material file, lab data, strain
+// path CSV) are resolved against the directory of the scene file.
+Scene read_scene(const std::string& path);
+
+// The same from JSON text; `base_dir` resolves relative paths, `default_name` names the output.
+Scene parse_scene(const std::string& json_text, const std::string& base_dir, const std::string& default_name);
+
+// Throws SceneError if the six rows cannot fix all six strain components with an elastic
+// stiffness of this material (rank < 6), naming the free component; `path` prefixes the message.
+void check_rows_complete(const ControlRows& rows, const Material& material, const std::string& path);
+
+}  // namespace acst::driver

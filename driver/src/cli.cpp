@@ -1,0 +1,275 @@
+#include "acst_driver/cli.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <unistd.h>
+
+#include "acst_driver/output.hpp"
+#include "acst_driver/runner.hpp"
+#include "acst_driver/scene.hpp"
+#include "acst_driver/summary.hpp"
+#include "step_reader.hpp"
+
+namespace acst::driver {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+void usage(std::ostream& o) {
+  o << "Usage: acst_element [--help] [--quiet] [--no-plot] [--output DIR] SCENE.json...\n"
+       "\n"
+       "Runs element tests of the ACST sand model described by JSON scenes (docs/element-tests.md)\n"
+       "and writes, per scene, NAME.csv (geotechnical convention: compression positive, strains in %,\n"
+       "engineering shear), NAME.png (q and e_v against axial strain, e against log p, q against p,\n"
+       "with the lab curves the scene names) and NAME.gp (the gnuplot script of the figure).\n"
+       "A run that fails writes NAME.failed.csv (the rows up to the failure) and NAME.reproducer.json\n"
+       "(one increment that replays the failure: acst_element NAME.reproducer.json).\n"
+       "\n"
+       "Options:\n"
+       "  --output DIR  write into DIR instead of each scene's output.directory (default results/element,\n"
+       "                relative to the current directory)\n"
+       "  --quiet       no progress and no summary (errors and warnings are still printed)\n"
+       "  --no-plot     write the CSV only\n"
+       "  --help        this text\n"
+       "\n"
+       "Files named inside a scene (material file, lab data, strain path) are relative to the scene file.\n"
+       "Every scene is validated before any runs; an invalid scene is reported with the JSON path of the\n"
+       "error and nothing is written.\n"
+       "Presets:";
+  for (const auto& p : preset_names()) o << ' ' << p;
+  o << "\n\nExit status: 0 all scenes ran; 1 a scene failed while running; 2 bad command line or invalid scene.\n"
+       "Example: acst_element data/scenes/element/*.json\n";
+}
+
+long planned_increments(const Scene& s) {
+  long n = 0;
+  for (const Block& b : s.blocks) {
+    long per = 0;
+    for (const Step& st : b.steps)
+      for (const Segment& g : st.segments) per += g.increments;
+    n += per * b.cycles;
+  }
+  return n;
+}
+
+std::string fixed(double v, int decimals) {
+  if (std::isnan(v)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.1f s", s);
+  else
+    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s / 60), static_cast<int>(s) % 60);
+  return buf;
+}
+
+// Progress on stderr: a line rewritten in place on a terminal, one line per scene otherwise.
+class Progress {
+ public:
+  Progress(std::ostream& err, bool enabled, int scenes, long planned)
+      : err_(err), enabled_(enabled), tty_(::isatty(2) == 1 && &err == &std::cerr), scenes_(scenes), planned_(planned),
+        start_(Clock::now()), last_(start_) {}
+
+  void update(int index, const std::string& name, long done) {
+    if (!enabled_ || !tty_) return;
+    const auto now = Clock::now();
+    if (now - last_ < std::chrono::milliseconds(200)) return;
+    last_ = now;
+    err_ << '\r' << line(index, name, done_before_ + done) << "\033[K" << std::flush;
+  }
+
+  void finished(int index, const std::string& name, long increments, bool ok, double seconds) {
+    done_before_ += increments;
+    if (!enabled_) return;
+    if (scenes_ == 1 && !tty_) return;
+    if (tty_) err_ << '\r';
+    err_ << line(index + 1, name, done_before_) << " (" << name << " " << (ok ? "done" : "FAILED") << " in "
+         << seconds_text(seconds) << ")" << (tty_ ? "\033[K" : "") << "\n"
+         << std::flush;
+  }
+
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+ private:
+  std::string line(int index, const std::string& name, long done) const {
+    const double t = elapsed();
+    const double rate = t > 0 ? done / t : 0.0;
+    std::string s = "[" + std::to_string(std::min(index + (index < scenes_ ? 1 : 0), scenes_)) + "/" +
+                    std::to_string(scenes_) + "] ";
+    if (index < scenes_) s += name + " ";
+    char buf[160];
+    const double left = rate > 0 ? (planned_ - done) / rate : 0.0;
+    std::snprintf(buf, sizeof buf, "%.0f%% of %ld increments, %.0f increments/s, %s elapsed, ~%s left",
+                  planned_ > 0 ? 100.0 * done / planned_ : 100.0, planned_, rate, seconds_text(t).c_str(),
+                  seconds_text(std::max(0.0, left)).c_str());
+    return s + buf;
+  }
+
+  std::ostream& err_;
+  bool enabled_, tty_;
+  int scenes_;
+  long planned_, done_before_ = 0;
+  Clock::time_point start_, last_;
+};
+
+struct Outcome {
+  std::string name;
+  bool ok = false;
+  long increments = 0;
+  RunSummary summary;
+  std::vector<LabComparison> labs;
+  std::string csv;
+};
+
+void print_summary(std::ostream& out, const std::vector<Outcome>& outcomes) {
+  char buf[400];
+  out << "\nSummary (q/p signed, negative in extension; e_v compression positive; lab: peak sigma_1/sigma_3 over the\n"
+         "lab's strain range and e_v at the lab's last e_v strain, simulation vs lab)\n";
+  std::snprintf(buf, sizeof buf, "%-36s %-6s %7s %9s %9s %8s %8s   %s\n", "scene", "status", "incr", "peak q/p",
+                "final q/p", "eps_a %", "e_v %", "lab comparison");
+  out << buf;
+  for (const Outcome& o : outcomes) {
+    std::string lab;
+    for (const LabComparison& c : o.labs)
+      lab += (lab.empty() ? "" : "; ") + c.id + ": s1/s3 " + fixed(c.sim_peak_sr, 2) + " vs " + fixed(c.lab_peak_sr, 2) +
+             ", e_v " + fixed(c.sim_ev_pct, 2) + " vs " + fixed(c.lab_ev_pct, 2) + " % at " + fixed(c.strain_pct, 1) + " %";
+    std::snprintf(buf, sizeof buf, "%-36s %-6s %7ld %9s %9s %8s %8s   %s\n", o.name.c_str(), o.ok ? "ok" : "FAILED",
+                  o.increments, fixed(o.summary.peak_stress_ratio, 3).c_str(), fixed(o.summary.final_stress_ratio, 3).c_str(),
+                  fixed(o.summary.final_axial_strain_pct, 2).c_str(), fixed(o.summary.final_volumetric_strain_pct, 2).c_str(),
+                  lab.c_str());
+    out << buf;
+  }
+}
+
+}  // namespace
+
+int element_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  bool quiet = false, plot = true;
+  std::string output_dir;
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      usage(out);
+      return 0;
+    } else if (a == "--quiet" || a == "-q") {
+      quiet = true;
+    } else if (a == "--no-plot") {
+      plot = false;
+    } else if (a == "--output" || a == "-o") {
+      if (i + 1 >= args.size()) {
+        err << "acst_element: --output needs a directory\n";
+        return 2;
+      }
+      output_dir = args[++i];
+    } else if (a.rfind("--output=", 0) == 0) {
+      output_dir = a.substr(9);
+    } else if (a.size() > 1 && a[0] == '-') {
+      err << "acst_element: unknown option '" << a << "' (see --help)\n";
+      return 2;
+    } else {
+      files.push_back(a);
+    }
+  }
+  if (files.empty()) {
+    err << "acst_element: no scene file given\n";
+    usage(err);
+    return 2;
+  }
+  // Read and validate everything first: an invalid scene means nothing is written.
+  std::vector<Scene> scenes;
+  int invalid = 0;
+  for (const auto& f : files) {
+    try {
+      scenes.push_back(read_scene(f));
+      if (!output_dir.empty()) scenes.back().output.directory = output_dir;
+      if (!plot) scenes.back().output.plot = false;
+    } catch (const std::exception& e) {
+      err << f << ": " << e.what() << "\n";
+      ++invalid;
+    }
+  }
+  std::map<std::string, std::string> targets;
+  for (const Scene& s : scenes) {
+    const std::string target = (fs::path(s.output.directory) / s.output.name).lexically_normal().string();
+    const auto [it, fresh] = targets.emplace(target, s.source);
+    if (!fresh) {
+      err << s.source << ": /output/name: writes to " << target << " as " << it->second
+          << " does; give one of them another output name\n";
+      ++invalid;
+    }
+  }
+  if (invalid > 0) {
+    err << "acst_element: " << invalid << " invalid scene" << (invalid > 1 ? "s" : "") << "; nothing was run or written\n";
+    return 2;
+  }
+  long planned = 0;
+  for (const Scene& s : scenes) planned += planned_increments(s);
+  Progress progress(err, !quiet, static_cast<int>(scenes.size()), planned);
+  std::vector<Outcome> outcomes;
+  int failed = 0;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const Scene& s = scenes[i];
+    const auto t0 = Clock::now();
+    Outcome o;
+    o.name = s.output.name;
+    RunResult r = run_scene(s, [&](long done, long) { progress.update(static_cast<int>(i), s.output.name, done); });
+    o.ok = r.ok;
+    o.increments = r.increments;
+    o.summary = summarise(r);
+    const fs::path dir(s.output.directory);
+    try {
+      fs::create_directories(dir);
+      const fs::path base = fs::absolute(dir / s.output.name);
+      if (r.ok) {
+        o.csv = base.string() + ".csv";
+        write_file_atomically(o.csv, csv_text(s, r));
+        if (s.output.plot) {
+          const std::string w = write_figure(s, r, o.csv, base.string() + ".png", base.string() + ".gp");
+          if (!w.empty()) err << s.source << ": warning: " << w << "\n";
+        }
+      } else {
+        ++failed;
+        err << s.source << ": run failed: " << r.message << "\n";
+        write_file_atomically(base.string() + ".failed.csv", csv_text(s, r));
+        if (r.reproducer) {
+          write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
+          err << s.source << ": wrote " << base.string() << ".reproducer.json (replays the failing increment) and "
+              << base.string() << ".failed.csv (the rows up to it)\n";
+        }
+      }
+    } catch (const std::exception& e) {
+      ++failed;
+      o.ok = false;
+      err << s.source << ": cannot write the results: " << e.what() << "\n";
+    }
+    for (const auto& lab : s.lab_data) {
+      try {
+        o.labs.push_back(compare_with_lab(r, read_lab_curve(lab)));
+      } catch (const std::exception&) {
+      }
+    }
+    progress.finished(static_cast<int>(i), s.output.name, r.increments, o.ok,
+                      std::chrono::duration<double>(Clock::now() - t0).count());
+    outcomes.push_back(std::move(o));
+  }
+  if (!quiet) {
+    print_summary(out, outcomes);
+    out << "\n" << scenes.size() - failed << " of " << scenes.size() << " scenes ran in " << seconds_text(progress.elapsed())
+        << "; results in " << (output_dir.empty() ? "each scene's output directory" : output_dir) << "\n";
+  }
+  return failed > 0 ? 1 : 0;
+}
+
+}  // namespace acst::driver

@@ -1,0 +1,127 @@
+// The CSV table of an element test.
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+#include "acst/integration/options.hpp"
+#include "acst_driver/number_format.hpp"
+#include "acst_driver/output.hpp"
+#include "units.hpp"
+
+namespace acst::driver {
+
+namespace {
+
+void put(std::string& out, double v) {
+  append_number(out, v);
+  out += ',';
+}
+
+void put(std::string& out, long v) {
+  char buf[24];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+  out += ',';
+}
+
+std::string vec(const Sym& v) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "[%g, %g, %g, %g, %g, %g]", v[0], v[1], v[2], v[3], v[4], v[5]);
+  return buf;
+}
+
+}  // namespace
+
+std::string csv_text(const Scene& scene, const RunResult& result) {
+  const Parameters& par = scene.material->parameters();
+  const integration::Options& opt = scene.material->options();
+  std::string out;
+  out.reserve(400 * (result.records.size() + 20));
+  out += "# acst_element: element test '" + scene.output.name + "'" +
+         (scene.source.empty() ? std::string() : " from " + scene.source) + "\n";
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "# material: %s, model %s, integrator %s stol %g\n", scene.material_source.c_str(),
+                par.variant == Variant::isotropic ? "isotropic" : "ACST", integration::scheme_name(opt.scheme), opt.stol);
+  out += buf;
+  Eigen::Vector3d b = scene.initial.deposition_direction.normalized();
+  for (int i = 0; i < 3; ++i) b[i] = std::abs(b[i]) < 1e-12 ? 0.0 : b[i];  // cos(90 deg) prints as 0
+  std::snprintf(buf, sizeof buf,
+                "# initial state: sigma = %s kPa, e0 = %.4f, bedding angle %.4g deg (deposition direction [%.4g, %.4g, %.4g])%s\n",
+                vec(scene.initial.stress).c_str(), scene.initial.void_ratio, scene.initial.bedding_angle_deg, b[0], b[1],
+                b[2], scene.initial.fabric ? ", fabric given" : "");
+  out += buf;
+  for (const auto& lab : scene.lab_data) out += "# lab data: " + lab + "\n";
+  out +=
+      "# convention: geotechnical, COMPRESSION POSITIVE for stresses and strains; test frame: axis 1 = axial (major "
+      "loading), 2 = intermediate (eps_22 = 0 in plane strain), 3 = minor lateral\n"
+      "# units: stresses in kPa (effective); strains in percent; shear strains are ENGINEERING gamma_ij = 2 eps_ij; "
+      "numbers to 10 significant digits\n"
+      "# p = (sigma_11 + sigma_22 + sigma_33)/3; q = sqrt(3/2 s:s), signed: negative when sigma_11 < (sigma_22 + "
+      "sigma_33)/2 (extension); stress_ratio = q/p\n"
+      "# e_v = eps_11 + eps_22 + eps_33; e_q = sqrt(2/3 e:e), e the strain deviator; eps_a = eps_11 (axial strain)\n"
+      "# psi = e - e_c(p); zeta = psi - e_A (A - 1); A = F:n; F_norm = |F| (fabric)\n"
+      "# u_excess_kPa: excess pore pressure accumulated over undrained steps = change of total minus effective mean "
+      "stress with the total lateral stress held: du = -(d sigma_22 + d sigma_33)/2 (0 in drained steps)\n"
+      "# time: each step takes one unit; step: index in /steps; cycle: cycle of a repeat block (1 otherwise); stage: "
+      "step within the repeat block\n"
+      "# substeps: accepted material substeps; iterations: Newton iterations (all cut-back pieces); cutbacks: "
+      "halvings of the increment; status: start | ok | cutback | exit:<condition>\n";
+  if (!result.ok) out += "# RUN FAILED: " + result.message + "\n";
+  out +=
+      "increment,time,step,cycle,stage,eps_11_pct,eps_22_pct,eps_33_pct,gamma_12_pct,gamma_13_pct,gamma_23_pct,"
+      "sigma_11_kPa,sigma_22_kPa,sigma_33_kPa,sigma_12_kPa,sigma_13_kPa,sigma_23_kPa,p_kPa,q_kPa,stress_ratio,"
+      "e_v_pct,e_q_pct,eps_a_pct,void_ratio,psi,zeta,A,F_norm,u_excess_kPa,substeps,iterations,cutbacks,status\n";
+  for (const Record& r : result.records) {
+    put(out, r.increment);
+    put(out, r.time);
+    put(out, static_cast<long>(r.step));
+    put(out, static_cast<long>(r.cycle));
+    put(out, static_cast<long>(r.stage));
+    for (int i = 0; i < 6; ++i) put(out, units::strain_to_scene(r.strain[i], i));
+    for (int i = 0; i < 6; ++i) put(out, r.stress[i]);
+    put(out, mean_stress(r.stress));
+    put(out, signed_q(r.stress));
+    put(out, stress_ratio_of(r.stress));
+    put(out, volumetric_strain_pct(r.strain));
+    put(out, deviatoric_strain_pct(r.strain));
+    put(out, axial_strain_pct(r.strain));
+    put(out, r.void_ratio);
+    put(out, r.psi);
+    put(out, r.zeta);
+    put(out, r.A);
+    put(out, r.fabric_norm);
+    put(out, r.u_excess);
+    put(out, static_cast<long>(r.substeps));
+    put(out, static_cast<long>(r.iterations));
+    put(out, static_cast<long>(r.cutbacks));
+    out += r.status;
+    out += '\n';
+  }
+  return out;
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  const std::filesystem::path p(path);
+  const std::string tmp = (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
+    f.write(text.data(), static_cast<std::streamsize>(text.size()));
+    f.close();
+    if (!f) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("writing '" + tmp + "' failed");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
+  }
+}
+
+}  // namespace acst::driver
