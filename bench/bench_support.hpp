@@ -15,6 +15,7 @@
 #include "acst/material.hpp"
 #include "acst/yield_function.hpp"
 #include "acst_driver/mixed_control.hpp"
+#include "strain_path_replay.hpp"  // tests/support: the replayed strain paths the tests use too
 
 namespace acst::bench {
 
@@ -40,62 +41,16 @@ inline std::string output_dir(int argc, char** argv) {
   return dir;
 }
 
+using test::drained_triaxial_strain_path;
+using test::isotropic_sample;
+using test::replay;
+using test::Replay;
+
+// A point that falls below p_min is a failure with a reason here, not a silent reset.
 inline Material with_integrator(const Material& base, integration::Scheme scheme, double stol, int fe_substeps = 1,
                                 bool reuse_last_substep = true) {
-  integration::Options o = base.options();
-  o.scheme = scheme;
-  o.stol = stol;
-  o.fe_substeps = fe_substeps;
-  o.reuse_last_substep = reuse_last_substep;
-  // A point that falls below p_min is a failure with a reason here, not a silent reset.
-  o.pressure_floor = integration::PressureFloorPolicy::fail;
-  return Material(base.parameters(), o);
-}
-
-// Isotropic sample, axis 1 along the deposition direction.
-inline State isotropic_sample(const Material& m, double p, double void_ratio) {
-  return m.initial_state(p * identity_tensor(), void_ratio, Eigen::Vector3d(1.0, 0.0, 0.0));
-}
-
-// Strain increments of a drained triaxial test, solved by the driver with RK45 at STOL 1e-10.
-inline std::vector<Sym> drained_triaxial_strain_path(const Material& base, State state, double axial_increment,
-                                                     int increments) {
-  const Material fine = with_integrator(base, integration::Scheme::rk45, 1e-10);
-  std::vector<Sym> path;
-  path.reserve(increments);
-  Sym guess = Sym::Zero();
-  guess[0] = axial_increment;
-  guess[1] = guess[2] = -0.3 * axial_increment;
-  for (int i = 0; i < increments; ++i) {
-    const driver::IncrementResult r = driver::solve_increment(fine, state, driver::drained_triaxial(axial_increment), guess);
-    if (!r.converged) throw std::runtime_error("drained triaxial path: increment " + std::to_string(i) + " failed");
-    path.push_back(r.strain_increment);
-    guess = r.strain_increment;
-  }
-  return path;
-}
-
-struct Replay {
-  std::vector<State> states;  // after each successful increment
-  integration::Counters counters;
-  bool ok = true;
-  integration::Reason reason = integration::Reason::none;
-};
-
-inline Replay replay(const Material& m, State state, const std::vector<Sym>& path) {
-  Replay out;
-  out.states.reserve(path.size());
-  for (const Sym& deps : path) {
-    const integration::Report r = m.update(state, deps);
-    out.counters += r.counters;
-    if (r.status != integration::Status::ok) {
-      out.ok = false;
-      out.reason = r.reason;
-      break;
-    }
-    out.states.push_back(state);
-  }
-  return out;
+  return test::with_integrator(base, scheme, stol, fe_substeps, reuse_last_substep,
+                               integration::PressureFloorPolicy::fail);
 }
 
 // Errors of a run against a reference over the increments both have (docs section 3):

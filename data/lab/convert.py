@@ -290,6 +290,13 @@ def convert_curve(folder, fname, src_dir, out_dir, log):
             "may lie between markers); these specimens (e_0.3 %s) are denser than the e_0.3 = 0.70 "
             "of the Fig. 21 phi tables" % h["e0"],
         ]
+        if tid == "lt88_fig5a_w60_hw1p0":
+            # sigma1'/sigma3' below 1 is impossible in drained TC with sigma3' held.
+            strain_hi = 13.0
+            caveats.insert(0, "the last two stress-ratio markers (2.01 at eps_a 13.92 %, 0.80 at "
+                              "14.80 %) are not physical for drained TC with sigma3' held (a ratio "
+                              "below 1): a read-out error or the collapse after failure; values "
+                              "kept, strain_range_pct ends at 13 % before them")
         if kind == "PSC":
             caveats.insert(0, "strain localises soon after the peak: use up to the peak only "
                               "(strain_range_pct ends at eps_peak_pct = %s %%)" % h["eps_peak_pct"])

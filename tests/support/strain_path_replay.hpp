@@ -15,14 +15,16 @@
 
 namespace acst::test {
 
-// The same material constants with other integrator options.
+// The same material constants with other integrator options (also used by bench/).
 inline Material with_integrator(const Material& base, integration::Scheme scheme, double stol, int fe_substeps = 1,
-                                bool reuse_last_substep = true) {
+                                bool reuse_last_substep = true,
+                                integration::PressureFloorPolicy floor = integration::PressureFloorPolicy::reset) {
   integration::Options o = base.options();
   o.scheme = scheme;
   o.stol = stol;
   o.fe_substeps = fe_substeps;
   o.reuse_last_substep = reuse_last_substep;
+  o.pressure_floor = floor;
   return Material(base.parameters(), o);
 }
 

@@ -97,10 +97,8 @@ class AcstRates {
     return Reason::none;
   }
 
-  double yield_value(const Vector& y, double H, const Sym& deps) const {
-    const Sym sigma = stress(y);
-    const StressRatioState st = stress_ratio_state(sigma, prm_.c, prm_.R_tolerance, deps);
-    return yield_function(st.R, st.lode.g, H);
+  double yield_value(const Vector& y, double H, const Sym&) const {
+    return acst::yield_value(stress(y), prm_.c, prm_.R_tolerance, H);
   }
 
   // Cosine between df/dsigma at y and the elastic trial stress increment.
@@ -122,9 +120,8 @@ class AcstRates {
   }
 
   // H = R/g(theta): exact drift correction after a plastic substep.
-  double hardening_memory(const Vector& y, const Sym& deps) const {
-    const StressRatioState st = stress_ratio_state(stress(y), prm_.c, prm_.R_tolerance, deps);
-    return st.R / st.lode.g;
+  double hardening_memory(const Vector& y, const Sym&) const {
+    return acst::yield_value(stress(y), prm_.c, prm_.R_tolerance, 0.0);
   }
 
   bool admissible(const Vector& y) const { return mean_stress(stress(y)) >= prm_.p_min && y[12] > 0.0; }

@@ -31,6 +31,17 @@ struct StressRatioState {
 // f = R/g - H.
 inline double yield_function(double R, double g, double H) { return R / g - H; }
 
+// f = R/g(theta) - H from the stress alone, without the loading direction (the cheap check of
+// every elastic trial).
+inline double yield_value(const Sym& sigma, double c, double R_tolerance, double H) {
+  const Sym r = deviator(sigma) / mean_stress(sigma);
+  const double r_norm = norm(r);
+  const double R = std::sqrt(1.5) * r_norm;
+  if (R < R_tolerance) return yield_function(R, lode_interpolation(c, 0.0).g, H);
+  const double s = std::clamp(lode_sin3theta_unclamped(r / r_norm), -1.0, 1.0);
+  return yield_function(R, lode_interpolation(c, s).g, H);
+}
+
 // n = dev(N)/|dev(N)| with dev(N) = [sqrt(3/2)(g + 3 s g') r_hat + 9 g' (r_hat^2 - I/3)] / g^2,
 // N = d(R/g)/dr, s = sin 3theta. Below R_tolerance, n is the unit deviatoric part of
 // `fallback_direction` (the strain increment) and g is g(s = 0); n = 0 if that is zero too.

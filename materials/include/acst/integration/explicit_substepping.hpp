@@ -35,12 +35,14 @@ class ExplicitSubstepping {
   // substep size between calls (pseudo-time units).
   Report integrate(Vector& y, double& H, double& substep_hint, const Sym& deps) const {
     Report rep;
-    const Vector trial = elastic_update(y, deps, rep.counters);
-    if (model_.yield_value(trial, H, deps) <= opt_.ftol) {
-      y = trial;
+    // One Heun step decides elastic or not; only an elastic answer needs it within STOL.
+    const ElasticStep trial = heun_step(y, deps, 1.0, rep.counters);
+    const double f_trial = model_.yield_value(trial.y, H, deps);
+    if (f_trial <= opt_.ftol) {
+      y = trial.error <= opt_.stol ? trial.y : elastic_update(y, deps, rep.counters);
       return finish(y, H, rep, Reason::none);
     }
-    const double alpha = elastic_fraction(y, H, deps, trial, rep.counters);
+    const double alpha = elastic_fraction(y, H, deps, trial.y, f_trial, rep.counters);
     if (alpha > 0.0) y = elastic_update(y, alpha * deps, rep.counters);
     const Sym plastic_part = (1.0 - alpha) * deps;
     const Reason r = opt_.scheme == Scheme::forward_euler ? forward_euler(y, H, plastic_part, rep)
@@ -52,41 +54,55 @@ class ExplicitSubstepping {
   const Model& model_;
   const Options& opt_;
 
-  // Heun's two-stage secant update of the pressure-dependent elastic law, substepped under the
-  // same STOL and error norm as the plastic part (one substep for ordinary increments). The
-  // elastic error falls with the cube of the substep, so 1e-3 of the increment is always
-  // enough; the floor keeps an unreachable STOL from costing a million substeps.
+  struct ElasticStep {
+    Vector y;
+    double error;  // relative error estimate (Heun against Euler)
+  };
+
+  // Heun's two-stage secant step over the fraction h of deps (pressure-dependent elasticity).
+  ElasticStep heun_step(const Vector& y, const Sym& deps, double h, Counters& c) const {
+    Vector k1, k2;
+    model_.elastic_rate(y, deps, k1, c);
+    model_.elastic_rate(y + h * k1, deps, k2, c);
+    const Vector y_new = y + (0.5 * h) * (k1 + k2);
+    return {y_new, std::max(model_.relative_error(y_new, (0.5 * h) * (k2 - k1)), 1e-16)};
+  }
+
+  // The elastic law over deps within STOL, by Heun substeps (one for ordinary increments). The
+  // error falls with the cube of the substep, so 1e-3 of the increment is always enough; the
+  // floor keeps an unreachable STOL from costing a million substeps.
   Vector elastic_update(const Vector& y0, const Sym& deps, Counters& c) const {
     const double smallest = std::max(opt_.min_substep, 1e-3);
-    Vector y = y0, k1, k2;
+    Vector y = y0;
     double T = 0.0, dT = 1.0;
     while (T < 1.0) {
       const double h = std::min(dT, 1.0 - T);
-      model_.elastic_rate(y, deps, k1, c);
-      model_.elastic_rate(y + h * k1, deps, k2, c);
-      const Vector y_new = y + (0.5 * h) * (k1 + k2);
-      const double R = std::max(model_.relative_error(y_new, (0.5 * h) * (k2 - k1)), 1e-16);
-      const double factor = 0.9 * std::sqrt(opt_.stol / R);
-      if (R > opt_.stol && h > smallest) {
+      const ElasticStep step = heun_step(y, deps, h, c);
+      const double factor = 0.9 * std::sqrt(opt_.stol / step.error);
+      if (step.error > opt_.stol && h > smallest) {
         dT = std::max(h * std::max(factor, 0.1), smallest);
         continue;
       }
-      y = y_new;
+      y = step.y;
       T = h >= 1.0 - T ? 1.0 : T + h;
       dT = std::max(h * std::min(factor, 2.0), smallest);
     }
     return y;
   }
 
+  // The yield value after the elastic fraction alpha of deps (one Heun step where that is
+  // within STOL, as for ordinary increments).
   double yield_at(const Vector& y, double H, const Sym& deps, double alpha, Counters& c) const {
-    return model_.yield_value(elastic_update(y, alpha * deps, c), H, deps);
+    const Sym part = alpha * deps;
+    const ElasticStep step = heun_step(y, part, 1.0, c);
+    return model_.yield_value(step.error <= opt_.stol ? step.y : elastic_update(y, part, c), H, deps);
   }
 
   // Fraction of deps that is elastic: 0 for plastic loading from the surface, the crossing for a
   // start inside, the reloading crossing for unload-then-reload.
-  double elastic_fraction(const Vector& y, double H, const Sym& deps, const Vector& trial, Counters& c) const {
+  double elastic_fraction(const Vector& y, double H, const Sym& deps, const Vector& trial, double f1,
+                          Counters& c) const {
     const double f0 = model_.yield_value(y, H, deps);
-    const double f1 = model_.yield_value(trial, H, deps);
     if (f0 < -opt_.ftol) return pegasus(y, H, deps, 0.0, f0, 1.0, f1, c);
     if (model_.unloading_cosine(y, trial - y, deps) >= -opt_.ltol) return 0.0;
     ++c.unload_reload;
