@@ -13,7 +13,9 @@ inline void fill_state(State& s, const double* statev) {
   s.void_ratio = statev[6];
   s.H = statev[7];
   s.substep_hint = statev[8];
-  s.pressure_floor_resets = static_cast<int>(statev[9]);
+  // A counter only: an unusable value restarts it rather than making the state non-physical.
+  const double resets = statev[9];
+  s.pressure_floor_resets = (resets >= 0.0 && resets < 2e9) ? static_cast<int>(resets) : 0;
 }
 
 inline void store_state(const State& s, double* statev) {
