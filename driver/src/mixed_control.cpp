@@ -111,11 +111,4 @@ LinearControl undrained_triaxial(double de_axial) {
   return c;
 }
 
-LinearControl strain_controlled(const Sym& de) {
-  LinearControl c;
-  c.B.setIdentity();
-  c.c = de;
-  return c;
-}
-
 }  // namespace acst::driver

@@ -8,6 +8,7 @@
 
 #include "abi_convention.hpp"
 #include "acst.h"
+#include "acst/elasticity.hpp"
 #include "acst/fabric.hpp"
 #include "acst/material.hpp"
 #include "c_abi_support.hpp"
@@ -193,8 +194,7 @@ acst_status acst_wave_speed(double* speed, const acst_model* model, const double
     s.stress = stress_to_model(stress);
     fill_state(s, statev);
     const acst::Diagnostics d = model->material.diagnostics(s);
-    const double M = d.K + 4.0 * d.G / 3.0;  // kPa
-    *speed = std::sqrt(M * 1000.0 / density);
+    *speed = std::sqrt(acst::constrained_modulus({d.G, d.K}) * 1000.0 / density);  // kPa -> Pa
     ACST_REQUIRE(std::isfinite(*speed), "acst_wave_speed: state gives a non-finite stiffness");
     return ok_status();
   })

@@ -81,11 +81,12 @@ Mat6 Material::tangent(const State& s, bool plastic, const Sym& strain_direction
   Mat6 D = elastic_stiffness(q.moduli);
   if (!plastic) return D;
   const double G = q.moduli.G, K = q.moduli.K;
-  const Sym a = 2.0 * G * q.ratio.n + std::sqrt(2.0 / 3.0) * K * q.D * identity_tensor();
-  const Sym b = 2.0 * G * q.ratio.n - K * q.n_r * identity_tensor();
-  const double den = q.Kp + 2.0 * G - std::sqrt(2.0 / 3.0) * K * q.D * q.n_r;
+  const LoadingIndexTerms L = loading_index_terms(G, K, q.Kp, q.D, q.ratio.n, q.n_r, strain_direction);
   // Only a loading direction contributes; at a non-positive denominator keep the elastic part.
-  if (den > 0.0 && contract(b, strain_direction) > 0.0) D -= a * contraction_row(b) / den;
+  if (L.denominator > 0.0 && L.numerator > 0.0) {
+    const Sym b = 2.0 * G * q.ratio.n - K * q.n_r * identity_tensor();  // L = b:d_eps / denominator
+    D -= plastic_stress_direction(q) * contraction_row(b) / L.denominator;
+  }
   return D;
 }
 

@@ -49,6 +49,5 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
 // Presets in the test frame (1 = axial): the control of one increment of d_eps_axial.
 LinearControl drained_triaxial(double axial_strain_increment);    // sigma_2, sigma_3 held, no shear
 LinearControl undrained_triaxial(double axial_strain_increment);  // eps_v = 0, sigma_2 = sigma_3
-LinearControl strain_controlled(const Sym& strain_increment);
 
 }  // namespace acst::driver

@@ -51,6 +51,18 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   return q;
 }
 
+// D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I) = 2G n + sqrt(2/3) K D I: the stress relaxed per
+// unit loading index
+// (n is deviatoric, so the deviatoric and volumetric parts separate without a deviator call.)
+inline Sym plastic_stress_direction(const PlasticQuantities& q) {
+  Sym a = 2.0 * q.moduli.G * q.ratio.n;
+  const double volumetric = std::sqrt(2.0 / 3.0) * q.moduli.K * q.D;
+  a[0] += volumetric;
+  a[1] += volumetric;
+  a[2] += volumetric;
+  return a;
+}
+
 class AcstRates {
  public:
   static constexpr int size = 13;  // stress (6), fabric (6), void ratio
@@ -90,7 +102,7 @@ class AcstRates {
     }
     const double load = L.numerator > 0.0 ? L.numerator / L.denominator : 0.0;
     Sym dsig = elastic_stress_increment(q.moduli, deps);
-    dsig -= load * (2.0 * q.moduli.G * q.ratio.n + std::sqrt(2.0 / 3.0) * q.moduli.K * q.D * identity_tensor());
+    dsig -= load * plastic_stress_direction(q);
     dy.template head<6>() = dsig;
     dy.template segment<6>(6) = load * fabric_rate(prm_.k_f, q.ratio.n, F);
     dy[12] = -(1.0 + e) * trace(deps);

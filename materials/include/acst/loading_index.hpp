@@ -17,9 +17,4 @@ inline LoadingIndexTerms loading_index_terms(double G, double K, double Kp, doub
   return {2.0 * G * contract(n, deps) - K * n_r * trace(deps), Kp + 2.0 * G - std::sqrt(2.0 / 3.0) * K * D * n_r};
 }
 
-// Plastic flow direction of d eps^p = L (n + sqrt(2/27) D I).
-inline Sym plastic_flow_direction(const Sym& n, double D) {
-  return n + std::sqrt(2.0 / 27.0) * D * identity_tensor();
-}
-
 }  // namespace acst
