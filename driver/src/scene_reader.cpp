@@ -11,7 +11,7 @@
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/presets.hpp"
 #include "acst_driver/scene.hpp"
-#include "json_fields.hpp"
+#include "acst_driver/json_fields.hpp"
 #include "step_reader.hpp"
 
 namespace acst::driver {

@@ -4,7 +4,7 @@
 
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/presets.hpp"
-#include "json_fields.hpp"
+#include "acst_driver/json_fields.hpp"
 #include "units.hpp"
 
 namespace acst::driver {

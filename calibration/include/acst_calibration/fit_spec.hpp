@@ -1,0 +1,93 @@
+#pragma once
+// A calibration as read from its JSON fit description (docs/calibration.md): the base material,
+// the parameters to fit with bounds and starts (shared or one per group of tests), the
+// experiments with their data, conditions, strain ranges and weights, and optimiser settings.
+// Units and signs as in the lab-data files and scenes: kPa, strains in percent, compression
+// positive.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace acst::calibration {
+
+// Any invalid fit description; the message starts with the JSON path of the error.
+struct FitError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct FittedParameter {
+  std::string name;   // a material constant (acst::parameter_names)
+  std::string path;   // JSON path, for messages
+  double start = 0.0, lower = 0.0, upper = 0.0;
+  bool per_group = false;                // one value per group of experiments
+  std::map<std::string, double> group_start;  // per-group starts (default: `start`)
+};
+
+// The stress axis of a curve: sigma1'/sigma3' (the lab files' stress_ratio) or q = sigma1' - sigma3'.
+enum class StressMeasure { stress_ratio, q_kPa };
+
+// Curve tests are run with the driver preset of the same name; `peak_friction` runs one
+// true-triaxial test (sigma3' held, b fixed) per selected row of a friction-angle table.
+inline constexpr const char* curve_tests[] = {"drained_triaxial_compression", "plane_strain_compression",
+                                              "true_triaxial"};
+inline constexpr const char* table_tests[] = {"peak_friction"};
+
+struct ExperimentSpec {
+  std::string id;             // unique; default: the data file's stem
+  std::string path;           // JSON path, e.g. /experiments/3
+  std::string test;           // a curve test or a table test
+  std::string group = "all";  // for per-group parameters
+  std::string data_file;      // resolved path
+  double sigma3_kPa = 0.0;    // confining stress during shearing
+  double void_ratio = 0.0;    // at `void_ratio_at_kPa` (isotropic), or at the start of shearing
+  double void_ratio_at_kPa = 0.0;  // > 0: start there and consolidate isotropically to sigma3
+  double bedding_angle_deg = 0.0;
+  double b = 0.0;                  // true_triaxial only
+  double strain_lo_pct = 0.0, strain_hi_pct = 0.0;  // axial strain range of the points used
+  double strain_increment_pct = 0.05;               // axial strain per increment of the run
+  double weight = 1.0;             // relative weight inside its test type
+  bool fit_stress = true, fit_volumetric = true;
+  StressMeasure stress_measure = StressMeasure::stress_ratio;
+  // peak_friction: the rows whose `column` holds one of the given numbers (all rows when
+  // empty), and the axial strain each row runs to while looking for the peak.
+  std::map<std::string, std::vector<double>> row_filter;
+  double peak_search_strain_pct = 10.0;
+};
+
+struct OptimizerSettings {
+  int design_points = 8;    // small space-filling design evaluated before the local fits
+  int starts = 2;           // local trust-region fits from the best design points (the start included)
+  int max_iterations = 40;  // per local fit
+  double xtol = 1e-5, gtol = 1e-6, ftol = 1e-7;
+  double fd_step = 1e-3;    // forward-difference step in the scaled parameters
+  double penalty = 10.0;    // normalised residual of every point of a failed simulation
+  int threads = 0;          // 0: all hardware threads
+  unsigned seed = 1;        // of the design
+};
+
+struct FitSpec {
+  std::string source;    // fit description file ("" when parsed from text)
+  std::string base_dir;  // relative paths resolve against it
+  std::string name;      // output stem
+  std::string description;
+  nlohmann::json material;  // {model, parameters, integrator}: fixed values and start point
+  std::vector<FittedParameter> parameters;
+  std::vector<ExperimentSpec> experiments;
+  std::vector<std::string> groups;              // in order of first appearance
+  std::map<std::string, double> type_weights;   // normalised to sum to one over the types used
+  double stress_axis_weight = 0.5, volumetric_axis_weight = 0.5;  // normalised to sum to one
+  OptimizerSettings optimizer;
+  std::string output_dir = "results/calibration";
+  std::string reference_group;  // whose per-group values go into the main parameter file
+};
+
+// Reads and validates a fit description; relative paths resolve against its directory.
+FitSpec read_fit_spec(const std::string& path);
+FitSpec parse_fit_spec(const std::string& json_text, const std::string& base_dir, const std::string& default_name);
+
+// Normalised weight of one experiment: its type weight times its share inside the type.
+double experiment_weight(const FitSpec& spec, std::size_t experiment);
+
+}  // namespace acst::calibration

@@ -1,0 +1,121 @@
+#pragma once
+// The calibration problem: the fitted variables (a shared parameter, or one value per group of
+// experiments), the driver runs that one evaluation needs, and the weighted residuals against
+// the measured points (docs/calibration.md, "Objective").
+//
+// Residual of a curve point:  sqrt(w_type w_test w_axis / n_points) (simulated - measured) / range
+// with `range` the measured range of that series inside the strain range (floored, see
+// series_scale), so that the sum of squares is a weighted mean of squared normalised errors and
+// the weights of the types, of the tests inside a type and of the two axes each sum to one.
+// A failed or too short simulation gives `penalty` instead of the normalised error: large and
+// finite, never an exception.
+#include <Eigen/Core>
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "acst/parameters.hpp"
+#include "acst_calibration/fit_spec.hpp"
+#include "acst_driver/runner.hpp"
+#include "acst_driver/scene.hpp"
+
+namespace acst::calibration {
+
+struct Variable {
+  std::string parameter;  // material constant
+  std::string group;      // "" when shared by all experiments
+  std::string label;      // "F0" or "F0[tatsuoka]"
+  double start = 0.0, lower = 0.0, upper = 0.0;
+};
+
+// Measured points of one axis of one experiment, inside its strain range.
+struct Series {
+  std::string axis;  // "stress" (sigma1'/sigma3' or q) or "volumetric" (eps_v %) or "phi" (deg)
+  std::vector<double> x;       // axial strain % (curves) or table row index (tables)
+  std::vector<double> measured;
+  double scale = 1.0;          // normalising range
+  double point_weight = 0.0;   // w_type w_test w_axis / n_points
+};
+
+// One driver run: a whole curve, or one row of a table test.
+struct Simulation {
+  std::size_t experiment = 0;
+  int row = -1;  // table row, -1 for curves
+  double b = 0.0, bedding_angle_deg = 0.0;  // of the shearing step
+  driver::Scene scene;
+  int shear_step = 0;  // index of the shearing step (1 after an isotropic consolidation)
+  long increments = 0;
+};
+
+// What one run produced, reduced to what the residuals need.
+struct SimulationOutcome {
+  bool ok = false;
+  std::string message;
+  std::vector<double> eps_a_pct, stress, eps_v_pct;  // shearing part, from the start of shearing
+  double peak_phi_deg = 0.0;
+  driver::RunResult run;  // kept only when asked (reports)
+};
+
+// Work counters over all evaluations (thread-safe).
+struct WorkCounters {
+  std::atomic<long> simulations{0}, failed{0}, increments{0}, substeps{0}, iterations{0};
+  std::atomic<long long> simulation_ns{0};
+};
+
+class Problem {
+ public:
+  explicit Problem(const FitSpec& spec);
+
+  const FitSpec& spec() const { return spec_; }
+  const std::vector<Variable>& variables() const { return variables_; }
+  const std::vector<Series>& series(std::size_t experiment) const { return series_[experiment]; }
+  const std::vector<Simulation>& simulations() const { return simulations_; }
+  // Indices into simulations() of experiment k's runs (a table: one per selected row, in order).
+  const std::vector<std::size_t>& simulations_of(std::size_t k) const { return sims_of_[k]; }
+  int residual_count() const { return residual_count_; }
+  Eigen::VectorXd start() const;
+  Eigen::VectorXd lower() const;
+  Eigen::VectorXd upper() const;
+
+  // The material constants of one group at the variable values `theta`.
+  Parameters parameters(const Eigen::VectorXd& theta, const std::string& group) const;
+
+  // Residuals at several points; all runs of all points share one pool of `threads` threads.
+  std::vector<Eigen::VectorXd> residuals(const std::vector<Eigen::VectorXd>& thetas) const;
+  // Residuals at one point, with the outcome of every simulation (for reports).
+  Eigen::VectorXd residuals(const Eigen::VectorXd& theta, std::vector<SimulationOutcome>& outcomes) const;
+
+  // The simulated value at point i of series s of experiment k (NaN when the run failed or
+  // ended before that strain); outcomes are indexed like simulations().
+  double simulated(std::size_t k, const Series& s, std::size_t i, const std::vector<const SimulationOutcome*>& outcomes) const;
+
+  WorkCounters& counters() const { return counters_; }
+  int threads() const { return threads_; }
+
+ private:
+  SimulationOutcome simulate(const Simulation& sim, const Eigen::VectorXd& theta, bool keep_run) const;
+  void assemble(const std::vector<const SimulationOutcome*>& outcomes, Eigen::VectorXd& r) const;
+
+  FitSpec spec_;
+  Parameters base_;
+  std::vector<Variable> variables_;
+  std::vector<std::vector<Series>> series_;     // per experiment
+  std::vector<std::vector<std::size_t>> sims_of_;  // per experiment: its simulations
+  std::vector<Simulation> simulations_;
+  std::vector<std::size_t> schedule_;           // simulations, longest first
+  int residual_count_ = 0;
+  int threads_ = 1;
+  mutable WorkCounters counters_;
+};
+
+// Normalising range of a measured series: max - min, floored at `floor_fraction` of max |value|
+// (and at an absolute floor for the axis) so that flat series do not blow up.
+double series_scale(const std::vector<double>& measured, const std::string& axis);
+
+// Linear interpolation in increasing x; NaN outside [x.front(), x.back()].
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);
+
+// Peak friction angle (deg) of a stress state: asin((s1 - s3)/(s1 + s3)) over principal stresses.
+double friction_angle_deg(const Sym& stress);
+
+}  // namespace acst::calibration

@@ -1,0 +1,387 @@
+// Fit description JSON -> FitSpec. Every error names the JSON path and what is allowed; the lab
+// files are read here (missing or malformed files are reported against the experiment's path).
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+
+#include "acst/json_input.hpp"
+#include "acst/parameters.hpp"
+#include "acst_calibration/fit_spec.hpp"
+#include "acst_driver/json_fields.hpp"
+#include "acst_driver/lab_data.hpp"
+
+namespace acst::calibration {
+
+using nlohmann::json;
+namespace f = driver::fields;
+
+namespace {
+
+std::string resolve(const std::string& base_dir, const std::string& name) {
+  const std::filesystem::path p(name);
+  return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
+}
+
+bool known(const char* const* begin, const char* const* end, const std::string& name) {
+  return std::find_if(begin, end, [&](const char* n) { return name == n; }) != end;
+}
+
+std::string list(const char* const* begin, const char* const* end) {
+  std::string s;
+  for (auto it = begin; it != end; ++it) s += (s.empty() ? "" : ", ") + std::string(*it);
+  return s;
+}
+
+json read_json_file(const std::string& file, const std::string& path, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) f::fail(path, "cannot read " + what + " '" + file + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return json::parse(ss.str());
+  } catch (const json::parse_error& e) {
+    f::fail(path, what + " '" + file + "' is not valid JSON: " + e.what());
+  }
+}
+
+// The material as a self-contained object {model, parameters, integrator}; a file's integrator
+// can be overridden as in scenes.
+json read_material(const json& j, const std::string& base_dir) {
+  f::object(j, "/material");
+  if (!j.contains("file")) {
+    f::allow_keys(j, {"model", "parameters", "integrator"}, "/material");
+    return j;
+  }
+  f::allow_keys(j, {"file", "integrator"}, "/material");
+  const std::string file = resolve(base_dir, f::string(j["file"], "/material/file"));
+  json m = read_json_file(file, "/material/file", "the material file");
+  f::object(m, "/material/file (" + file + ")");
+  if (j.contains("integrator")) {
+    f::object(j["integrator"], "/material/integrator");
+    for (const auto& item : j["integrator"].items()) m["integrator"][item.key()] = item.value();
+  }
+  return m;
+}
+
+// Checks one parameter value against the material's ranges, the other constants as in the base.
+void check_in_range(const Parameters& base, int index, double value, const std::string& path) {
+  Parameters p = base;
+  parameter_by_index(p, index) = value;
+  try {
+    validate(p);
+  } catch (const ParameterRangeError& e) {
+    if (e.parameter == parameter_names[index]) f::fail(path, e.what());
+  } catch (const InputError& e) {
+    f::fail(path, e.what());
+  }
+}
+
+FittedParameter read_parameter(const std::string& name, const json& j, const std::string& path,
+                               const Parameters& base) {
+  const auto* begin = std::begin(parameter_names);
+  const auto* end = std::end(parameter_names);
+  const auto found = std::find_if(begin, end, [&](const char* n) { return name == n; });
+  if (found == end || name == "e_max" || name == "e_min" || name == "p_min")
+    f::fail(path, "unknown or unfittable parameter '" + name +
+                      "' (fittable: G0, nu, Mc, c, e_Gamma, lambda_c, xi, d1, m, h1, h2, n, e_A, F0, k_f)");
+  const int index = static_cast<int>(found - begin);
+  if (base.variant == Variant::isotropic && (name == "F0" || name == "e_A" || name == "k_f"))
+    f::fail(path, "the isotropic model has no fabric: '" + name + "' cannot be fitted (use \"model\": \"ACST\")");
+  f::allow_keys(j, {"start", "bounds", "per_group", "group_start"}, path);
+  FittedParameter p;
+  p.name = name;
+  p.path = path;
+  if (!j.contains("bounds")) f::fail(path + "/bounds", "required: [lower, upper]");
+  const auto b = f::numbers(j["bounds"], path + "/bounds", 2, "lower and upper bound");
+  p.lower = b[0];
+  p.upper = b[1];
+  if (!(p.lower < p.upper)) f::fail(path + "/bounds", "the lower bound " + f::shown(p.lower) + " must be below the upper bound " + f::shown(p.upper));
+  check_in_range(base, index, p.lower, path + "/bounds/0");
+  check_in_range(base, index, p.upper, path + "/bounds/1");
+  const f::Range inside{p.lower, p.upper, true, true};
+  p.start = j.contains("start") ? f::number(j["start"], path + "/start", inside)
+                                : parameter_by_index(base, index);
+  if (!inside.contains(p.start))
+    f::fail(path + "/start", "the material's value " + f::shown(p.start) + " is not strictly inside the bounds " +
+                                 inside.text() + "; give a start");
+  if (j.contains("per_group")) p.per_group = f::boolean(j["per_group"], path + "/per_group");
+  if (j.contains("group_start")) {
+    if (!p.per_group) f::fail(path + "/group_start", "only for a parameter with \"per_group\": true");
+    f::object(j["group_start"], path + "/group_start");
+    for (const auto& item : j["group_start"].items())
+      p.group_start[item.key()] = f::number(item.value(), path + "/group_start/" + item.key(), inside);
+  }
+  return p;
+}
+
+std::pair<double, double> strain_range(const driver::LabCurve& lab, const std::string& path) {
+  std::istringstream in(lab.text("strain_range_pct"));
+  double lo = NAN, hi = NAN;
+  if (!(in >> lo >> hi) || !(lo < hi))
+    f::fail(path, "the lab file '" + lab.path + "' has no usable 'strain_range_pct: lo hi' header; give strain_range_pct");
+  return {lo, hi};
+}
+
+double header_number(const driver::LabCurve& lab, const char* key, const std::string& path, const char* spec_key) {
+  const double v = lab.number(key);
+  if (std::isnan(v))
+    f::fail(path, std::string("the lab file '") + lab.path + "' has no numeric '" + key + "' header; give " + spec_key);
+  return v;
+}
+
+ExperimentSpec read_experiment(const json& j, const std::string& path, const json& defaults, const std::string& base_dir) {
+  f::allow_keys(j, {"id", "data", "test", "group", "sigma3_kPa", "void_ratio", "void_ratio_at_kPa",
+                    "bedding_angle_deg", "b", "strain_range_pct", "strain_increment_pct", "weight", "fit",
+                    "stress_measure", "rows", "peak_search_strain_pct", "description"},
+                path);
+  // Defaults first, then the experiment's own keys.
+  json e = defaults;
+  for (const auto& item : j.items()) e[item.key()] = item.value();
+  auto key_path = [&](const char* k) { return (j.contains(k) ? path : std::string("/defaults")) + "/" + k; };
+
+  ExperimentSpec x;
+  x.path = path;
+  if (!e.contains("data")) f::fail(path + "/data", "required: the lab data file");
+  const std::string name = f::string(e["data"], key_path("data"));
+  x.data_file = resolve(base_dir, name);
+  driver::LabCurve lab;
+  try {
+    lab = driver::read_commented_csv(x.data_file, true);  // tables have text columns
+  } catch (const std::exception& err) {
+    f::fail(key_path("data"), err.what());
+  }
+  x.id = e.contains("id") ? f::string(e["id"], key_path("id")) : std::filesystem::path(name).stem().string();
+
+  if (e.contains("test")) {
+    x.test = f::string(e["test"], key_path("test"));
+  } else {
+    const std::string kind = lab.text("kind").substr(0, lab.text("kind").find(' '));
+    if (kind == "TC") x.test = "drained_triaxial_compression";
+    else if (kind == "PSC") x.test = "plane_strain_compression";
+    else f::fail(path + "/test", "required (the lab file's kind '" + lab.text("kind") + "' does not name a test)");
+  }
+  const bool curve = known(std::begin(curve_tests), std::end(curve_tests), x.test);
+  const bool table = known(std::begin(table_tests), std::end(table_tests), x.test);
+  if (!curve && !table)
+    f::fail(key_path("test"), "unknown test type '" + x.test + "' (allowed: " + list(std::begin(curve_tests), std::end(curve_tests)) +
+                                  ", " + list(std::begin(table_tests), std::end(table_tests)) + ")");
+  if (e.contains("group")) x.group = f::string(e["group"], key_path("group"));
+  if (x.group.empty()) f::fail(key_path("group"), "must not be empty");
+
+  x.sigma3_kPa = e.contains("sigma3_kPa") ? f::number(e["sigma3_kPa"], key_path("sigma3_kPa"), f::positive(), "kPa")
+                                          : header_number(lab, "sigma3_kPa", path, "sigma3_kPa");
+  x.void_ratio = e.contains("void_ratio") ? f::number(e["void_ratio"], key_path("void_ratio"), {0.0, 2.97, true, true})
+                                          : header_number(lab, "e0", path, "void_ratio");
+  if (e.contains("void_ratio_at_kPa"))
+    x.void_ratio_at_kPa = f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), {0.0, x.sigma3_kPa, true, false}, "kPa (at most sigma3_kPa)");
+  if (e.contains("b")) {
+    if (x.test != "true_triaxial") f::fail(key_path("b"), "only for the true_triaxial test (peak_friction takes b from its table)");
+    x.b = f::number(e["b"], key_path("b"), {0.0, 1.0});
+  }
+  if (e.contains("weight")) x.weight = f::number(e["weight"], key_path("weight"), {0.0, 1e6, false, false});
+  if (e.contains("strain_increment_pct"))
+    x.strain_increment_pct = f::number(e["strain_increment_pct"], key_path("strain_increment_pct"), {1e-4, 1.0}, "%");
+
+  if (curve) {
+    x.bedding_angle_deg = e.contains("bedding_angle_deg")
+        ? f::number(e["bedding_angle_deg"], key_path("bedding_angle_deg"), {0.0, 180.0}, "deg")
+        : header_number(lab, "bedding_angle_deg", path, "bedding_angle_deg");
+    try {
+      lab = driver::read_lab_curve(x.data_file);
+    } catch (const std::exception& err) {
+      f::fail(key_path("data"), std::string(err.what()) + " (a " + x.test + " test needs a lab curve)");
+    }
+    if (e.contains("strain_range_pct")) {
+      const auto r = f::numbers(e["strain_range_pct"], key_path("strain_range_pct"), 2, "lowest and highest axial strain in %");
+      if (!(r[0] >= 0.0 && r[0] < r[1])) f::fail(key_path("strain_range_pct"), "needs 0 <= lower < upper");
+      x.strain_lo_pct = r[0];
+      x.strain_hi_pct = r[1];
+    } else {
+      std::tie(x.strain_lo_pct, x.strain_hi_pct) = strain_range(lab, path);
+    }
+    if (e.contains("fit")) {
+      if (!e["fit"].is_array() || e["fit"].empty()) f::fail(key_path("fit"), "expected a non-empty array of \"stress\", \"volumetric\"");
+      x.fit_stress = x.fit_volumetric = false;
+      for (std::size_t i = 0; i < e["fit"].size(); ++i) {
+        const std::string a = f::string(e["fit"][i], key_path("fit") + "/" + std::to_string(i));
+        if (a == "stress") x.fit_stress = true;
+        else if (a == "volumetric") x.fit_volumetric = true;
+        else f::fail(key_path("fit") + "/" + std::to_string(i), "'" + a + "' is not an axis (allowed: stress, volumetric)");
+      }
+    }
+    if (e.contains("stress_measure")) {
+      const std::string m = f::string(e["stress_measure"], key_path("stress_measure"));
+      if (m == "stress_ratio") x.stress_measure = StressMeasure::stress_ratio;
+      else if (m == "q_kPa") x.stress_measure = StressMeasure::q_kPa;
+      else f::fail(key_path("stress_measure"), "'" + m + "' is not allowed (stress_ratio = sigma1'/sigma3', q_kPa)");
+    }
+    if (j.contains("rows")) f::fail(path + "/rows", "only for table tests (peak_friction)");
+  } else {
+    for (const char* column : {"b", "omega_deg", "phi_deg"})
+      if (lab.column(column).empty())
+        f::fail(key_path("data"), "'" + x.data_file + "' has no '" + column + "' column (a peak_friction table needs b, omega_deg, phi_deg)");
+    if (e.contains("rows")) {
+      f::object(e["rows"], key_path("rows"));
+      for (const auto& item : e["rows"].items()) {
+        const std::string rp = key_path("rows") + "/" + item.key();
+        if (lab.column(item.key()).empty()) f::fail(rp, "the table has no column '" + item.key() + "'");
+        if (!item.value().is_array() || item.value().empty()) f::fail(rp, "expected a non-empty array of numbers");
+        for (std::size_t k = 0; k < item.value().size(); ++k)
+          x.row_filter[item.key()].push_back(f::number(item.value()[k], rp + "/" + std::to_string(k)));
+      }
+    }
+    if (e.contains("peak_search_strain_pct"))
+      x.peak_search_strain_pct = f::number(e["peak_search_strain_pct"], key_path("peak_search_strain_pct"), {0.5, 50.0}, "%");
+    for (const char* k : {"bedding_angle_deg", "strain_range_pct", "fit", "stress_measure"})
+      if (j.contains(k)) f::fail(path + "/" + k, "not used by table tests (the table gives the bedding angle; the peak is searched up to peak_search_strain_pct)");
+  }
+  return x;
+}
+
+void read_optimizer(const json& j, OptimizerSettings& o) {
+  const std::string p = "/optimizer";
+  f::allow_keys(j, {"design_points", "starts", "max_iterations", "xtol", "gtol", "ftol", "fd_step", "penalty", "threads", "seed"}, p);
+  if (j.contains("design_points")) o.design_points = static_cast<int>(f::integer(j["design_points"], p + "/design_points", 0, 1000));
+  if (j.contains("starts")) o.starts = static_cast<int>(f::integer(j["starts"], p + "/starts", 1, 100));
+  if (j.contains("max_iterations")) o.max_iterations = static_cast<int>(f::integer(j["max_iterations"], p + "/max_iterations", 1, 10000));
+  if (j.contains("xtol")) o.xtol = f::number(j["xtol"], p + "/xtol", {0.0, 0.1, true, false});
+  if (j.contains("gtol")) o.gtol = f::number(j["gtol"], p + "/gtol", {0.0, 0.1, true, false});
+  if (j.contains("ftol")) o.ftol = f::number(j["ftol"], p + "/ftol", {0.0, 0.1, true, false});
+  if (j.contains("fd_step")) o.fd_step = f::number(j["fd_step"], p + "/fd_step", {1e-8, 0.1}, "(scaled parameters)");
+  if (j.contains("penalty")) o.penalty = f::number(j["penalty"], p + "/penalty", {1.0, 1e6}, "(normalised residual per point)");
+  if (j.contains("threads")) o.threads = static_cast<int>(f::integer(j["threads"], p + "/threads", 0, 1024));
+  if (j.contains("seed")) o.seed = static_cast<unsigned>(f::integer(j["seed"], p + "/seed", 0, 4294967295LL));
+  if (o.starts > o.design_points + 1)
+    f::fail(p + "/starts", std::to_string(o.starts) + " local fits need at least " + std::to_string(o.starts - 1) +
+                               " design points besides the start (design_points is " + std::to_string(o.design_points) + ")");
+}
+
+void read_weights(const json& j, FitSpec& s) {
+  f::allow_keys(j, {"types", "axes"}, "/weights");
+  if (j.contains("types")) {
+    f::object(j["types"], "/weights/types");
+    for (const auto& item : j["types"].items()) {
+      const std::string p = "/weights/types/" + item.key();
+      if (!known(std::begin(curve_tests), std::end(curve_tests), item.key()) &&
+          !known(std::begin(table_tests), std::end(table_tests), item.key()))
+        f::fail(p, "unknown test type (allowed: " + list(std::begin(curve_tests), std::end(curve_tests)) + ", " +
+                       list(std::begin(table_tests), std::end(table_tests)) + ")");
+      s.type_weights[item.key()] = f::number(item.value(), p, {0.0, 1e6, true, false});
+    }
+  }
+  if (j.contains("axes")) {
+    f::allow_keys(j["axes"], {"stress", "volumetric"}, "/weights/axes");
+    if (j["axes"].contains("stress")) s.stress_axis_weight = f::number(j["axes"]["stress"], "/weights/axes/stress", {0.0, 1e6});
+    if (j["axes"].contains("volumetric"))
+      s.volumetric_axis_weight = f::number(j["axes"]["volumetric"], "/weights/axes/volumetric", {0.0, 1e6});
+    const double sum = s.stress_axis_weight + s.volumetric_axis_weight;
+    if (!(sum > 0.0)) f::fail("/weights/axes", "at least one axis needs a positive weight");
+    s.stress_axis_weight /= sum;
+    s.volumetric_axis_weight /= sum;
+  }
+}
+
+FitSpec parse(const json& j, const std::string& base_dir, const std::string& default_name) {
+  f::allow_keys(j, {"description", "name", "material", "parameters", "experiments", "defaults", "weights", "optimizer", "output"}, "");
+  for (const char* key : {"material", "parameters", "experiments"})
+    if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
+  FitSpec s;
+  s.base_dir = base_dir;
+  s.name = j.contains("name") ? f::string(j["name"], "/name") : default_name;
+  if (j.contains("description")) s.description = f::string(j["description"], "/description");
+
+  s.material = read_material(j["material"], base_dir);
+  Parameters base;
+  try {
+    f::allow_keys(s.material, {"model", "parameters", "integrator"}, "/material");
+    const Variant v = s.material.contains("model") ? variant_from_json(s.material["model"], "/model") : Variant::anisotropic;
+    if (!s.material.contains("parameters")) f::fail("/material/parameters", "required object is missing");
+    base = parameters_from_json(s.material["parameters"], v, "/parameters");
+    if (s.material.contains("integrator")) options_from_json(s.material["integrator"], "/integrator");
+  } catch (const InputError& e) {
+    f::fail("/material", e.what());
+  }
+
+  f::object(j["parameters"], "/parameters");
+  if (j["parameters"].empty()) f::fail("/parameters", "name at least one parameter to fit");
+  for (const auto& item : j["parameters"].items())
+    s.parameters.push_back(read_parameter(item.key(), item.value(), "/parameters/" + item.key(), base));
+
+  const json defaults = j.contains("defaults") ? f::object(j["defaults"], "/defaults") : json::object();
+  if (!j["experiments"].is_array() || j["experiments"].empty()) f::fail("/experiments", "expected a non-empty array of experiments");
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < j["experiments"].size(); ++i) {
+    const std::string p = "/experiments/" + std::to_string(i);
+    ExperimentSpec x = read_experiment(f::object(j["experiments"][i], p), p, defaults, base_dir);
+    if (!ids.insert(x.id).second) f::fail(p + "/id", "the id '" + x.id + "' is used twice; give each experiment its own id");
+    if (std::find(s.groups.begin(), s.groups.end(), x.group) == s.groups.end()) s.groups.push_back(x.group);
+    s.experiments.push_back(std::move(x));
+  }
+  for (const FittedParameter& p : s.parameters)
+    for (const auto& [group, value] : p.group_start)
+      if (std::find(s.groups.begin(), s.groups.end(), group) == s.groups.end())
+        f::fail(p.path + "/group_start/" + group, "no experiment is in the group '" + group + "'");
+
+  if (j.contains("weights")) read_weights(j["weights"], s);
+  std::map<std::string, double> used;
+  for (const ExperimentSpec& x : s.experiments) used[x.test] = s.type_weights.count(x.test) ? s.type_weights[x.test] : 1.0;
+  for (const auto& [type, w] : s.type_weights)
+    if (!used.count(type)) f::fail("/weights/types/" + type, "no experiment has this test type");
+  double sum = 0.0;
+  for (const auto& [type, w] : used) sum += w;
+  if (!(sum > 0.0)) f::fail("/weights/types", "at least one test type in use needs a positive weight");
+  for (auto& [type, w] : used) w /= sum;
+  s.type_weights = used;
+
+  if (j.contains("optimizer")) read_optimizer(f::object(j["optimizer"], "/optimizer"), s.optimizer);
+  if (j.contains("output")) {
+    f::allow_keys(j["output"], {"directory", "reference_group"}, "/output");
+    if (j["output"].contains("directory")) s.output_dir = f::string(j["output"]["directory"], "/output/directory");
+    if (j["output"].contains("reference_group")) s.reference_group = f::string(j["output"]["reference_group"], "/output/reference_group");
+  }
+  if (s.reference_group.empty()) s.reference_group = s.groups.front();
+  if (std::find(s.groups.begin(), s.groups.end(), s.reference_group) == s.groups.end())
+    f::fail("/output/reference_group", "no experiment is in the group '" + s.reference_group + "'");
+  return s;
+}
+
+}  // namespace
+
+FitSpec parse_fit_spec(const std::string& text, const std::string& base_dir, const std::string& default_name) {
+  try {
+    json j;
+    try {
+      j = json::parse(text);
+    } catch (const json::parse_error& e) {
+      f::fail("", std::string("the fit description is not valid JSON: ") + e.what());
+    }
+    return parse(j, base_dir, default_name.empty() ? "fit" : default_name);
+  } catch (const driver::SceneError& e) {
+    throw FitError(e.what());
+  }
+}
+
+FitSpec read_fit_spec(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FitError("cannot read the fit description '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::filesystem::path p(path);
+  FitSpec s = parse_fit_spec(ss.str(), p.parent_path().string(), p.stem().string());
+  s.source = path;
+  return s;
+}
+
+double experiment_weight(const FitSpec& spec, std::size_t k) {
+  const ExperimentSpec& x = spec.experiments[k];
+  double inside = 0.0;
+  for (const ExperimentSpec& y : spec.experiments)
+    if (y.test == x.test) inside += y.weight;
+  return inside > 0.0 ? spec.type_weights.at(x.test) * x.weight / inside : 0.0;
+}
+
+}  // namespace acst::calibration

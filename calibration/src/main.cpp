@@ -1,0 +1,9 @@
+// acst_fit: fits ACST or isotropic parameters to lab curves (see --help).
+#include <iostream>
+
+#include "acst_calibration/cli.hpp"
+
+int main(int argc, char** argv) {
+  std::ios::sync_with_stdio(false);
+  return acst::calibration::fit_cli(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+}

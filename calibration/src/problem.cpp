@@ -1,0 +1,296 @@
+// The calibration problem: scenes built from the experiments, runs in parallel, residuals.
+#include "acst_calibration/problem.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "acst/material.hpp"
+#include "acst_driver/lab_data.hpp"
+#include "acst_driver/record.hpp"
+#include "parallel_for.hpp"
+
+namespace acst::calibration {
+
+using nlohmann::json;
+
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  if (x.empty() || !(at >= x.front() && at <= x.back())) return NAN;
+  const auto it = std::lower_bound(x.begin(), x.end(), at);
+  const std::size_t i = static_cast<std::size_t>(it - x.begin());
+  if (x[i] == at || i == 0) return y[i];
+  return y[i - 1] + (y[i] - y[i - 1]) * (at - x[i - 1]) / (x[i] - x[i - 1]);
+}
+
+double series_scale(const std::vector<double>& measured, const std::string& axis) {
+  double lo = INFINITY, hi = -INFINITY, big = 0.0;
+  for (double v : measured) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    big = std::max(big, std::abs(v));
+  }
+  // Absolute floors: 0.1 in sigma1'/sigma3', 0.2 % volumetric strain, 1 deg of friction angle.
+  const double absolute = axis == "volumetric" ? 0.2 : axis == "phi" ? 1.0 : axis == "stress_q" ? 1.0 : 0.1;
+  return std::max({hi - lo, 0.05 * big, absolute});
+}
+
+double friction_angle_deg(const Sym& stress) {
+  Eigen::Matrix3d s;
+  s << stress[0], stress[3], stress[4], stress[3], stress[1], stress[5], stress[4], stress[5], stress[2];
+  const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s, Eigen::EigenvaluesOnly).eigenvalues();
+  return std::asin((ev[2] - ev[0]) / (ev[2] + ev[0])) * 180.0 / M_PI;
+}
+
+namespace {
+
+int parameter_index(const std::string& name) {
+  for (int i = 0; i < parameter_count; ++i)
+    if (name == parameter_names[i]) return i;
+  return -1;
+}
+
+// Scene of one run: optional isotropic consolidation from void_ratio_at_kPa, then shearing.
+json scene_json(const FitSpec& spec, const ExperimentSpec& x, const std::string& test, double b, double bedding,
+                double axial_pct, int increments) {
+  json steps = json::array();
+  const bool consolidate = x.void_ratio_at_kPa > 0.0 && x.void_ratio_at_kPa < x.sigma3_kPa;
+  if (consolidate) steps.push_back({{"preset", "isotropic_compression"}, {"p_to", x.sigma3_kPa}, {"increments", 20}});
+  json shear = {{"preset", test}, {"axial_strain_pct", axial_pct}, {"increments", increments}};
+  if (test == "true_triaxial") shear["b"] = b;
+  steps.push_back(shear);
+  json initial = {{"confining_pressure", consolidate ? x.void_ratio_at_kPa : x.sigma3_kPa}, {"void_ratio", x.void_ratio}};
+  if (spec.material.value("model", std::string("ACST")) != "isotropic") initial["bedding_angle_deg"] = bedding;
+  return {{"material", spec.material}, {"initial_state", initial}, {"steps", steps}, {"output", {{"plot", false}}}};
+}
+
+driver::Scene build_scene(const json& j, const ExperimentSpec& x, const std::string& name) {
+  try {
+    return driver::parse_scene(j.dump(), "", name);
+  } catch (const driver::SceneError& e) {
+    throw FitError(x.path + ": the element test built from this experiment is invalid: " + e.what());
+  }
+}
+
+}  // namespace
+
+Problem::Problem(const FitSpec& spec) : spec_(spec) {
+  threads_ = spec.optimizer.threads > 0 ? spec.optimizer.threads
+                                        : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  for (const FittedParameter& p : spec.parameters) {
+    if (!p.per_group) {
+      variables_.push_back({p.name, "", p.name, p.start, p.lower, p.upper});
+      continue;
+    }
+    for (const std::string& g : spec.groups) {
+      const auto it = p.group_start.find(g);
+      variables_.push_back({p.name, g, p.name + "[" + g + "]", it == p.group_start.end() ? p.start : it->second, p.lower, p.upper});
+    }
+  }
+  series_.resize(spec.experiments.size());
+  sims_of_.resize(spec.experiments.size());
+  for (std::size_t k = 0; k < spec.experiments.size(); ++k) {
+    const ExperimentSpec& x = spec.experiments[k];
+    const double w = experiment_weight(spec, k);
+    const bool table = x.test == "peak_friction";
+    const driver::LabCurve lab = table ? driver::read_commented_csv(x.data_file, true) : driver::read_lab_curve(x.data_file);
+    auto add_simulation = [&](int row, double b, double bedding, const json& j, long increments) {
+      Simulation s;
+      s.experiment = k;
+      s.row = row;
+      s.b = b;
+      s.bedding_angle_deg = bedding;
+      s.scene = build_scene(j, x, x.id);
+      s.shear_step = static_cast<int>(s.scene.blocks.size()) - 1;
+      s.increments = increments;
+      sims_of_[k].push_back(simulations_.size());
+      simulations_.push_back(std::move(s));
+    };
+    if (table) {
+      Series phi;
+      phi.axis = "phi";
+      const auto b = lab.column("b"), omega = lab.column("omega_deg"), measured = lab.column("phi_deg");
+      for (std::size_t i = 0; i < measured.size(); ++i) {
+        bool selected = !std::isnan(b[i]) && !std::isnan(omega[i]) && !std::isnan(measured[i]);
+        for (const auto& [column, values] : x.row_filter) {
+          const double v = lab.column(column)[i];
+          selected = selected && std::find(values.begin(), values.end(), v) != values.end();
+        }
+        if (!selected) continue;
+        const int n = static_cast<int>(std::ceil(x.peak_search_strain_pct / x.strain_increment_pct));
+        add_simulation(static_cast<int>(i), b[i], omega[i], scene_json(spec, x, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
+        phi.x.push_back(static_cast<double>(i));
+        phi.measured.push_back(measured[i]);
+      }
+      if (phi.x.empty()) throw FitError(x.path + "/rows: no row of '" + x.data_file + "' is selected");
+      phi.scale = series_scale(phi.measured, phi.axis);
+      phi.point_weight = w / static_cast<double>(phi.x.size());
+      series_[k].push_back(phi);
+    } else {
+      const auto eps_a = lab.column("eps_a_pct");
+      auto collect = [&](const char* column, const std::string& axis, double axis_weight) {
+        Series s;
+        s.axis = axis;
+        const auto v = lab.column(column);
+        if (v.empty()) throw FitError(x.path + "/data: '" + x.data_file + "' has no column " + column + " (set \"fit\" to leave that axis out)");
+        for (std::size_t i = 0; i < v.size(); ++i)
+          if (!std::isnan(v[i]) && eps_a[i] > 0.0 && eps_a[i] >= x.strain_lo_pct && eps_a[i] <= x.strain_hi_pct) {
+            s.x.push_back(eps_a[i]);
+            s.measured.push_back(v[i]);
+          }
+        if (s.x.empty())
+          throw FitError(x.path + "/strain_range_pct: no " + column + " point of '" + x.data_file + "' lies in [" +
+                         std::to_string(x.strain_lo_pct) + ", " + std::to_string(x.strain_hi_pct) + "] %");
+        s.scale = series_scale(s.measured, axis == "stress" && x.stress_measure == StressMeasure::q_kPa ? "stress_q" : axis);
+        s.point_weight = w * axis_weight / static_cast<double>(s.x.size());
+        series_[k].push_back(s);
+      };
+      const double sa = spec.stress_axis_weight, va = spec.volumetric_axis_weight;
+      const double share = (x.fit_stress ? sa : 0.0) + (x.fit_volumetric ? va : 0.0);
+      if (!(share > 0.0)) throw FitError(x.path + "/fit: the axes this experiment fits have zero weight (/weights/axes)");
+      if (x.fit_stress) collect(x.stress_measure == StressMeasure::q_kPa ? "q_kPa" : "stress_ratio", "stress", sa / share);
+      if (x.fit_volumetric) collect("eps_v_pct", "volumetric", va / share);
+      // Run a little past the last point so that it is interpolated, not extrapolated.
+      double last = 0.0;
+      for (const Series& s : series_[k]) last = std::max(last, s.x.back());
+      const double to = last + 2.0 * x.strain_increment_pct;
+      const int n = static_cast<int>(std::ceil(to / x.strain_increment_pct));
+      add_simulation(-1, x.b, x.bedding_angle_deg, scene_json(spec, x, x.test, x.b, x.bedding_angle_deg, to, n), n);
+    }
+    for (const Series& s : series_[k]) residual_count_ += static_cast<int>(s.x.size());
+  }
+  schedule_.resize(simulations_.size());
+  for (std::size_t i = 0; i < schedule_.size(); ++i) schedule_[i] = i;
+  std::stable_sort(schedule_.begin(), schedule_.end(),
+                   [&](std::size_t a, std::size_t b) { return simulations_[a].increments > simulations_[b].increments; });
+  base_ = simulations_.front().scene.material->parameters();
+}
+
+Eigen::VectorXd Problem::start() const {
+  Eigen::VectorXd v(variables_.size());
+  for (std::size_t i = 0; i < variables_.size(); ++i) v[i] = variables_[i].start;
+  return v;
+}
+Eigen::VectorXd Problem::lower() const {
+  Eigen::VectorXd v(variables_.size());
+  for (std::size_t i = 0; i < variables_.size(); ++i) v[i] = variables_[i].lower;
+  return v;
+}
+Eigen::VectorXd Problem::upper() const {
+  Eigen::VectorXd v(variables_.size());
+  for (std::size_t i = 0; i < variables_.size(); ++i) v[i] = variables_[i].upper;
+  return v;
+}
+
+Parameters Problem::parameters(const Eigen::VectorXd& theta, const std::string& group) const {
+  Parameters p = base_;
+  for (std::size_t i = 0; i < variables_.size(); ++i)
+    if (variables_[i].group.empty() || variables_[i].group == group)
+      parameter_by_index(p, parameter_index(variables_[i].parameter)) = theta[static_cast<Eigen::Index>(i)];
+  return p;
+}
+
+SimulationOutcome Problem::simulate(const Simulation& sim, const Eigen::VectorXd& theta, bool keep_run) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  SimulationOutcome out;
+  const ExperimentSpec& x = spec_.experiments[sim.experiment];
+  driver::Scene scene = sim.scene;
+  try {
+    const Parameters p = parameters(theta, x.group);
+    validate(p);
+    scene.material.emplace(p, sim.scene.material->options());
+    for (int i = 0; i < parameter_count; ++i) {
+      const std::string name = parameter_names[i];
+      if (scene.material_json["parameters"].contains(name)) scene.material_json["parameters"][name] = parameter_by_index(p, i);
+    }
+    driver::RunResult run = driver::run_scene(scene);
+    out.ok = run.ok;
+    out.message = run.message;
+    counters_.increments += run.increments;
+    counters_.substeps += run.substeps;
+    counters_.iterations += run.iterations;
+    Sym start_strain = Sym::Zero();
+    bool started = false;
+    for (const driver::Record& rec : run.records) {
+      if (rec.step < sim.shear_step) {
+        start_strain = rec.strain;
+        continue;
+      }
+      if (!started) {
+        started = true;
+        out.eps_a_pct.push_back(0.0);  // the start of shearing
+        out.stress.push_back(x.stress_measure == StressMeasure::q_kPa ? 0.0 : 1.0);
+        out.eps_v_pct.push_back(0.0);
+      }
+      const Sym strain = rec.strain - start_strain;
+      const double eps_a = driver::axial_strain_pct(strain);
+      if (eps_a <= out.eps_a_pct.back()) continue;  // a cut-back row may repeat a strain
+      out.eps_a_pct.push_back(eps_a);
+      out.stress.push_back(x.stress_measure == StressMeasure::q_kPa ? rec.stress[0] - rec.stress[2]
+                                                                       : rec.stress[0] / rec.stress[2]);
+      out.eps_v_pct.push_back(driver::volumetric_strain_pct(strain));
+      out.peak_phi_deg = std::max(out.peak_phi_deg, friction_angle_deg(rec.stress));
+    }
+    if (keep_run) out.run = std::move(run);
+  } catch (const std::exception& e) {  // parameters outside the material's ranges, or worse
+    out.ok = false;
+    out.message = e.what();
+  }
+  if (!out.ok) ++counters_.failed;
+  ++counters_.simulations;
+  counters_.simulation_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+double Problem::simulated(std::size_t k, const Series& s, std::size_t i,
+                          const std::vector<const SimulationOutcome*>& outcomes) const {
+  if (s.axis == "phi") {
+    const SimulationOutcome& o = *outcomes[sims_of_[k][i]];
+    return o.ok ? o.peak_phi_deg : NAN;
+  }
+  const SimulationOutcome& o = *outcomes[sims_of_[k].front()];
+  return o.ok ? interpolate(o.eps_a_pct, s.axis == "stress" ? o.stress : o.eps_v_pct, s.x[i]) : NAN;
+}
+
+void Problem::assemble(const std::vector<const SimulationOutcome*>& outcomes, Eigen::VectorXd& r) const {
+  r.resize(residual_count_);
+  Eigen::Index at = 0;
+  for (std::size_t k = 0; k < series_.size(); ++k)
+    for (const Series& s : series_[k])
+      for (std::size_t i = 0; i < s.x.size(); ++i, ++at) {
+        const double e = (simulated(k, s, i, outcomes) - s.measured[i]) / s.scale;
+        r[at] = std::sqrt(s.point_weight) * (std::isfinite(e) ? e : spec_.optimizer.penalty);
+      }
+}
+
+std::vector<Eigen::VectorXd> Problem::residuals(const std::vector<Eigen::VectorXd>& thetas) const {
+  const std::size_t ns = simulations_.size();
+  std::vector<SimulationOutcome> outcomes(thetas.size() * ns);
+  // Longest runs first over all points, so that the threads finish together.
+  parallel_for(outcomes.size(), threads_, [&](std::size_t job) {
+    const std::size_t point = job % thetas.size(), sim = schedule_[job / thetas.size()];
+    outcomes[point * ns + sim] = simulate(simulations_[sim], thetas[point], false);
+  });
+  std::vector<Eigen::VectorXd> r(thetas.size());
+  std::vector<const SimulationOutcome*> view(ns);
+  for (std::size_t point = 0; point < thetas.size(); ++point) {
+    for (std::size_t s = 0; s < ns; ++s) view[s] = &outcomes[point * ns + s];
+    assemble(view, r[point]);
+  }
+  return r;
+}
+
+Eigen::VectorXd Problem::residuals(const Eigen::VectorXd& theta, std::vector<SimulationOutcome>& outcomes) const {
+  outcomes.assign(simulations_.size(), {});
+  parallel_for(schedule_.size(), threads_, [&](std::size_t job) {
+    outcomes[schedule_[job]] = simulate(simulations_[schedule_[job]], theta, true);
+  });
+  std::vector<const SimulationOutcome*> view;
+  for (const auto& o : outcomes) view.push_back(&o);
+  Eigen::VectorXd r;
+  assemble(view, r);
+  return r;
+}
+
+}  // namespace acst::calibration

@@ -1,0 +1,405 @@
+// Reports and overlays of a calibration (see report.hpp).
+#include "acst_calibration/report.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "acst_driver/number_format.hpp"
+#include "acst_driver/output.hpp"
+
+namespace acst::calibration {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<const SimulationOutcome*> view_of(const std::vector<SimulationOutcome>& outcomes) {
+  std::vector<const SimulationOutcome*> v;
+  for (const auto& o : outcomes) v.push_back(&o);
+  return v;
+}
+
+json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string fmt(double v, const char* f = "%.4g") {
+  if (!std::isfinite(v)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+std::string axis_title(const ExperimentSpec& x, const std::string& axis) {
+  if (axis == "phi") return "peak friction angle [deg]";
+  if (axis == "volumetric") return "e_v [%] (contraction +)";
+  return x.stress_measure == StressMeasure::q_kPa ? "sigma_1 - sigma_3 [kPa]" : "sigma_1/sigma_3 [-]";
+}
+
+bool gnuplot_available() {
+  static const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+  return found;
+}
+
+std::string shell_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The gnuplot commands of one panel of experiment k; `dir` is where its CSV files are, seen from
+// the script.
+std::string panel(const Problem& problem, std::size_t k, const Series& s, std::size_t index, const std::string& dir) {
+  const ExperimentSpec& x = problem.spec().experiments[k];
+  const std::string points = "'" + dir + x.id + "_points.csv'";
+  std::ostringstream g;
+  g << "set title '" << x.id << " (" << x.test << ", " << s.axis << ")' noenhanced\n";
+  if (s.axis == "phi") {
+    g << "set xlabel 'bedding angle [deg]'\nset ylabel '" << axis_title(x, s.axis) << "'\nset xrange [-10:100]\n"
+      << "plot " << points << " using 2:4:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 7 ps 1.3 lc variable title 'lab (TC, PSC, TE)', \\\n"
+      << "     " << points << " using 2:5:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 6 ps 2 lw 2 lc variable title 'fit'\n"
+      << "set xrange [*:*]\n";
+    return g.str();
+  }
+  const int column = s.axis == "stress" ? 2 : 3;
+  g << "set xlabel 'axial strain [%]'\nset ylabel '" << axis_title(x, s.axis) << "'\n"
+    << "plot '" << dir << x.id << ".csv' using 1:" << column << " with lines lw 2 lc rgb '#1f77b4' title 'fit', \\\n"
+    << "     " << points << " using 2:($1==" << index << "?$3:1/0) with points pt 7 ps 0.8 lc rgb '#d62728' title 'lab'\n";
+  return g.str();
+}
+
+void write_text(const fs::path& p, const std::string& text) { driver::write_file_atomically(p.string(), text); }
+
+// Runs gnuplot on `script` inside `dir`; returns a warning or "".
+std::string run_gnuplot(const fs::path& dir, const std::string& script) {
+  const std::string cmd = "cd " + shell_quoted(dir.string()) + " && gnuplot " + shell_quoted(script) + " >/dev/null 2>&1";
+  return std::system(cmd.c_str()) == 0 ? "" : "gnuplot failed on " + (dir / script).string();
+}
+
+}  // namespace
+
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const Eigen::VectorXd& theta,
+                                               const std::vector<SimulationOutcome>& outcomes) {
+  (void)theta;
+  const auto view = view_of(outcomes);
+  std::vector<ExperimentError> errors;
+  double total = 0.0;
+  for (std::size_t k = 0; k < problem.spec().experiments.size(); ++k) {
+    const ExperimentSpec& x = problem.spec().experiments[k];
+    ExperimentError e;
+    e.id = x.id;
+    e.test = x.test;
+    e.group = x.group;
+    e.weight = experiment_weight(problem.spec(), k);
+    for (std::size_t sim : problem.simulations_of(k))
+      if (!outcomes[sim].ok) {
+        e.ok = false;
+        if (e.message.empty()) e.message = outcomes[sim].message;
+      }
+    for (const Series& s : problem.series(k)) {
+      AxisError a;
+      a.axis = s.axis;
+      a.points = static_cast<int>(s.x.size());
+      a.scale = s.scale;
+      double sum = 0.0, sum_n = 0.0;
+      for (std::size_t i = 0; i < s.x.size(); ++i) {
+        const double d = problem.simulated(k, s, i, view) - s.measured[i];
+        const double n = std::isfinite(d) ? d / s.scale : problem.spec().optimizer.penalty;
+        sum += std::isfinite(d) ? d * d : NAN;
+        sum_n += n * n;
+        a.max_abs = std::max(a.max_abs, std::isfinite(d) ? std::abs(d) : INFINITY);
+        e.cost_share += s.point_weight * n * n;
+      }
+      a.rms = std::sqrt(sum / a.points);
+      a.rms_normalised = std::sqrt(sum_n / a.points);
+      e.axes.push_back(a);
+    }
+    total += e.cost_share;
+    errors.push_back(e);
+  }
+  for (auto& e : errors) e.cost_share = total > 0.0 ? e.cost_share / total : 0.0;
+  return errors;
+}
+
+json fitted_material(const Problem& problem, const Eigen::VectorXd& theta, const std::string& group) {
+  json m = problem.spec().material;
+  const Parameters p = problem.parameters(theta, group);
+  for (const Variable& v : problem.variables())
+    for (int i = 0; i < parameter_count; ++i)
+      if (v.parameter == parameter_names[i]) m["parameters"][v.parameter] = parameter_by_index(p, i);
+  return m;
+}
+
+json report_json(const Problem& problem, const FitResult& fit, const std::vector<ExperimentError>& errors, const RunInfo& info) {
+  const FitSpec& spec = problem.spec();
+  const auto& vars = problem.variables();
+  const Uncertainty& u = fit.uncertainty;
+  json r;
+  r["name"] = spec.name;
+  r["description"] = spec.description;
+  r["fit_description"] = spec.source;
+  r["model"] = spec.material.value("model", std::string("ACST"));
+  r["objective"] = {{"sum_of_squares", fit.cost},
+                    {"rms_normalised_error", std::sqrt(fit.cost)},
+                    {"residuals", problem.residual_count()},
+                    {"fitted_values", vars.size()},
+                    {"degrees_of_freedom", u.degrees_of_freedom},
+                    {"residual_variance", u.residual_variance},
+                    {"condition_number", number_or_null(u.condition_number)}};
+  json params = json::array(), labels = json::array();
+  for (std::size_t j = 0; j < vars.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(j);
+    params.push_back({{"label", vars[j].label}, {"parameter", vars[j].parameter}, {"group", vars[j].group},
+                      {"start", vars[j].start}, {"bounds", {vars[j].lower, vars[j].upper}}, {"value", fit.theta[i]},
+                      {"standard_error", number_or_null(u.standard_error[i])},
+                      {"ci95", {number_or_null(u.ci95_lower[i]), number_or_null(u.ci95_upper[i])}},
+                      {"at_bound", static_cast<bool>(u.at_bound[j])}});
+    labels.push_back(vars[j].label);
+  }
+  r["parameters"] = params;
+  json corr = json::array();
+  for (Eigen::Index i = 0; i < u.correlation.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index j = 0; j < u.correlation.cols(); ++j) row.push_back(number_or_null(u.correlation(i, j)));
+    corr.push_back(row);
+  }
+  r["correlation"] = {{"labels", labels}, {"matrix", corr}};
+  json fixed = json::object();
+  for (const auto& item : spec.material["parameters"].items()) {
+    bool fitted = false;
+    for (const Variable& v : vars) fitted = fitted || v.parameter == item.key();
+    if (!fitted) fixed[item.key()] = item.value();
+  }
+  r["fixed"] = fixed;
+  json ex = json::array();
+  for (const ExperimentError& e : errors) {
+    json axes = json::array();
+    for (const AxisError& a : e.axes)
+      axes.push_back({{"axis", a.axis}, {"points", a.points}, {"rms_normalised", number_or_null(a.rms_normalised)},
+                      {"rms", number_or_null(a.rms)}, {"max_abs", number_or_null(a.max_abs)}, {"scale", a.scale}});
+    ex.push_back({{"id", e.id}, {"test", e.test}, {"group", e.group}, {"ok", e.ok}, {"message", e.message},
+                  {"weight", e.weight}, {"cost_share", e.cost_share}, {"axes", axes}});
+  }
+  r["experiments"] = ex;
+  json design = json::array();
+  for (std::size_t k = 0; k < fit.design.size(); ++k) design.push_back({{"cost", fit.design_costs[k]}});
+  json local = json::array();
+  for (const LocalFit& l : fit.local_fits) {
+    json from = json::object(), to = json::object();
+    for (std::size_t j = 0; j < vars.size(); ++j) {
+      from[vars[j].label] = l.from[static_cast<Eigen::Index>(j)];
+      to[vars[j].label] = l.theta[static_cast<Eigen::Index>(j)];
+    }
+    local.push_back({{"from", from}, {"start_cost", l.start_cost}, {"cost", l.cost}, {"iterations", l.iterations},
+                     {"evaluations", l.evaluations}, {"stop", l.stop}, {"result", to}});
+  }
+  r["multistart"] = {{"design_costs", fit.design_costs}, {"local_fits", local}, {"best", fit.best}};
+  const WorkCounters& c = problem.counters();
+  const long evaluations = fit.evaluations;
+  r["work"] = {{"objective_evaluations", evaluations},
+               {"simulations", c.simulations.load()},
+               {"simulations_per_evaluation", problem.simulations().size()},
+               {"failed_simulations", c.failed.load()},
+               {"increments", c.increments.load()},
+               {"newton_iterations", c.iterations.load()},
+               {"material_substeps", c.substeps.load()}};
+  r["time"] = {{"total_s", info.total_seconds},
+               {"design_s", fit.design_seconds},
+               {"local_fits_s", fit.local_seconds},
+               {"final_jacobian_s", fit.jacobian_seconds},
+               {"threads", info.threads},
+               {"simulation_cpu_s", static_cast<double>(c.simulation_ns.load()) * 1e-9}};
+  return r;
+}
+
+std::string report_markdown(const json& r) {
+  std::ostringstream m;
+  m << "# Calibration report: " << r["name"].get<std::string>() << "\n\n";
+  if (!r["description"].get<std::string>().empty()) m << r["description"].get<std::string>() << "\n\n";
+  m << "Model: " << r["model"].get<std::string>() << ". Fit description: `" << r["fit_description"].get<std::string>() << "`.\n\n";
+  const json& o = r["objective"];
+  m << "Objective (weighted mean of squared normalised errors): " << fmt(o["sum_of_squares"].get<double>())
+    << "; RMS normalised error " << fmt(o["rms_normalised_error"].get<double>()) << " over " << o["residuals"] << " points, "
+    << o["fitted_values"] << " fitted values.\n\n";
+  m << "## Parameters\n\n| parameter | start | bounds | value | std. error | 95 % interval | note |\n|---|---|---|---|---|---|---|\n";
+  for (const json& p : r["parameters"]) {
+    auto num = [](const json& v) { return v.is_null() ? std::string("-") : fmt(v.get<double>()); };
+    m << "| " << p["label"].get<std::string>() << " | " << fmt(p["start"].get<double>()) << " | ["
+      << fmt(p["bounds"][0].get<double>()) << ", " << fmt(p["bounds"][1].get<double>()) << "] | "
+      << fmt(p["value"].get<double>()) << " | " << num(p["standard_error"]) << " | [" << num(p["ci95"][0]) << ", "
+      << num(p["ci95"][1]) << "] | " << (p["at_bound"].get<bool>() ? "at a bound: interval not meaningful" : "") << " |\n";
+  }
+  m << "\nFixed: ";
+  bool first = true;
+  for (const auto& item : r["fixed"].items()) {
+    m << (first ? "" : ", ") << item.key() << " " << item.value().dump();
+    first = false;
+  }
+  m << ".\n\nStandard errors are s (J^T J)^-1/2 with s^2 = " << fmt(o["residual_variance"].get<double>())
+    << " (sum of squares / degrees of freedom) and J the Jacobian at the optimum (condition number of the column-scaled J^T J: "
+    << (o["condition_number"].is_null() ? std::string("inf") : fmt(o["condition_number"].get<double>(), "%.3g"))
+    << "). They treat the digitised points as independent, which they are not: read them as lower bounds.\n\n";
+  m << "### Correlation\n\n|";
+  for (const json& l : r["correlation"]["labels"]) m << " | " << l.get<std::string>();
+  m << " |\n|---";
+  for (std::size_t j = 0; j < r["correlation"]["labels"].size(); ++j) m << "|---";
+  m << "|\n";
+  for (std::size_t i = 0; i < r["correlation"]["labels"].size(); ++i) {
+    m << "| " << r["correlation"]["labels"][i].get<std::string>();
+    for (const json& v : r["correlation"]["matrix"][i]) m << " | " << (v.is_null() ? std::string("-") : fmt(v.get<double>(), "%.2f"));
+    m << " |\n";
+  }
+  m << "\n## Errors per test\n\nRMS of simulated minus measured at the measured points, in the axis' unit and normalised by the "
+       "measured range (scale); share = part of the objective.\n\n"
+       "| test | type | group | weight | share | stress RMS | stress RMS/scale | e_v RMS % | e_v RMS/scale | phi RMS deg | status |\n"
+       "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const json& e : r["experiments"]) {
+    std::string cells[5] = {"-", "-", "-", "-", "-"};
+    for (const json& a : e["axes"]) {
+      auto num = [](const json& v, const char* f) { return v.is_null() ? std::string("failed") : fmt(v.get<double>(), f); };
+      const std::string axis = a["axis"];
+      if (axis == "stress") {
+        cells[0] = num(a["rms"], "%.3g");
+        cells[1] = num(a["rms_normalised"], "%.3f");
+      } else if (axis == "volumetric") {
+        cells[2] = num(a["rms"], "%.3g");
+        cells[3] = num(a["rms_normalised"], "%.3f");
+      } else {
+        cells[4] = num(a["rms"], "%.3g");
+      }
+    }
+    m << "| " << e["id"].get<std::string>() << " | " << e["test"].get<std::string>() << " | " << e["group"].get<std::string>()
+      << " | " << fmt(e["weight"].get<double>(), "%.3f") << " | " << fmt(e["cost_share"].get<double>(), "%.3f");
+    for (const auto& c : cells) m << " | " << c;
+    m << " | " << (e["ok"].get<bool>() ? "ok" : "FAILED: " + e["message"].get<std::string>()) << " |\n";
+  }
+  m << "\n## Optimiser\n\nDesign of " << r["multistart"]["design_costs"].size() << " points, then "
+    << r["multistart"]["local_fits"].size() << " trust-region fits (GSL gsl_multifit_nlinear, Levenberg-Marquardt):\n\n"
+    << "| fit | start cost | final cost | iterations | evaluations | stop |\n|---|---|---|---|---|---|\n";
+  int k = 0;
+  for (const json& l : r["multistart"]["local_fits"]) {
+    ++k;
+    m << "| " << k << (k - 1 == r["multistart"]["best"].get<int>() ? " (best)" : "") << " | " << fmt(l["start_cost"].get<double>())
+      << " | " << fmt(l["cost"].get<double>()) << " | " << l["iterations"] << " | " << l["evaluations"] << " | "
+      << l["stop"].get<std::string>() << " |\n";
+  }
+  const json& w = r["work"];
+  const json& t = r["time"];
+  m << "\n## Work and time\n\n" << w["objective_evaluations"] << " objective evaluations of " << w["simulations_per_evaluation"]
+    << " element tests each: " << w["simulations"] << " element tests (" << w["failed_simulations"] << " failed), "
+    << w["increments"] << " increments, " << w["newton_iterations"] << " Newton iterations, " << w["material_substeps"]
+    << " material substeps.\n\n| phase | wall s |\n|---|---|\n| design | " << fmt(t["design_s"].get<double>(), "%.1f")
+    << " |\n| local fits | " << fmt(t["local_fits_s"].get<double>(), "%.1f") << " |\n| final Jacobian and uncertainty | "
+    << fmt(t["final_jacobian_s"].get<double>(), "%.1f") << " |\n| total (reading to fitted; figures not included) | " << fmt(t["total_s"].get<double>(), "%.1f") << " |\n\nElement tests ran on " << t["threads"]
+    << " threads and took " << fmt(t["simulation_cpu_s"].get<double>(), "%.1f") << " thread-seconds in all.\n";
+  return m.str();
+}
+
+std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit, const std::vector<SimulationOutcome>& outcomes,
+                                       const RunInfo& info, const std::string& directory, bool plot) {
+  const FitSpec& spec = problem.spec();
+  const fs::path dir(directory);
+  fs::create_directories(dir);
+  const fs::path scratch = dir / (".scratch-" + spec.name + "-" + std::to_string(::getpid()));
+  fs::remove_all(scratch);
+  fs::create_directories(scratch / "curves");
+  std::vector<std::string> warnings;
+  std::vector<fs::path> files;  // relative to scratch
+  auto add = [&](const fs::path& rel, const std::string& text) {
+    write_text(scratch / rel, text);
+    files.push_back(rel);
+  };
+  try {
+    add(spec.name + "_parameters.json", fitted_material(problem, fit.theta, spec.reference_group).dump(2) + "\n");
+    bool per_group = false;
+    for (const Variable& v : problem.variables()) per_group = per_group || !v.group.empty();
+    if (per_group)
+      for (const std::string& g : spec.groups)
+        add(spec.name + "_parameters_" + g + ".json", fitted_material(problem, fit.theta, g).dump(2) + "\n");
+    const json report = report_json(problem, fit, experiment_errors(problem, fit.theta, outcomes), info);
+    add(spec.name + "_report.json", report.dump(2) + "\n");
+    add(spec.name + "_report.md", report_markdown(report));
+
+    const auto view = view_of(outcomes);
+    std::string overview;
+    int panels = 0;
+    for (std::size_t k = 0; k < spec.experiments.size(); ++k) {
+      const ExperimentSpec& x = spec.experiments[k];
+      const bool table = x.test == "peak_friction";
+      std::ostringstream pts;
+      pts << (table ? "row,omega_deg,b,measured,simulated\n" : "series,eps_a_pct,measured,simulated\n");
+      for (std::size_t si = 0; si < problem.series(k).size(); ++si) {
+        const Series& s = problem.series(k)[si];
+        for (std::size_t i = 0; i < s.x.size(); ++i) {
+          const double sim = problem.simulated(k, s, i, view);
+          if (table) {
+            const Simulation& row_sim = problem.simulations()[problem.simulations_of(k)[i]];
+            pts << s.x[i] << ',' << row_sim.bedding_angle_deg << ',' << row_sim.b << ',' << s.measured[i] << ','
+                << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
+          } else {
+            pts << si << ',' << s.x[i] << ',' << s.measured[i] << ',' << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
+          }
+        }
+      }
+      add(fs::path("curves") / (x.id + "_points.csv"), pts.str());
+      if (!table) {
+        const SimulationOutcome& o = outcomes[problem.simulations_of(k).front()];
+        std::ostringstream c;
+        c << "eps_a_pct," << (x.stress_measure == StressMeasure::q_kPa ? "q_kPa" : "stress_ratio") << ",eps_v_pct\n";
+        for (std::size_t i = 0; i < o.eps_a_pct.size(); ++i)
+          c << fmt(o.eps_a_pct[i], "%.6g") << ',' << fmt(o.stress[i], "%.6g") << ',' << fmt(o.eps_v_pct[i], "%.6g") << '\n';
+        add(fs::path("curves") / (x.id + ".csv"), c.str());
+      }
+      std::ostringstream gp;
+      const int n = static_cast<int>(problem.series(k).size());
+      gp << "set terminal pngcairo size " << 600 * n << ",450 font ',10'\nset output '" << x.id << ".png.tmp'\n"
+         << "set datafile separator ','\nset key top left\nset grid\nset multiplot layout 1," << n << "\n";
+      for (std::size_t si = 0; si < problem.series(k).size(); ++si) {
+        gp << panel(problem, k, problem.series(k)[si], si, "");
+        overview += panel(problem, k, problem.series(k)[si], si, "curves/");
+        ++panels;
+      }
+      gp << "unset multiplot\nset output\n";
+      add(fs::path("curves") / (x.id + ".gp"), gp.str());
+    }
+    const int columns = 6, rows = (panels + columns - 1) / columns;
+    add(spec.name + "_overview.gp", "set terminal pngcairo size " + std::to_string(400 * columns) + "," + std::to_string(320 * rows) +
+                                        " font ',8'\nset output '" + spec.name + "_overview.png.tmp'\nset datafile separator ','\n"
+                                        "set key top left\nset grid\nset multiplot layout " + std::to_string(rows) + "," +
+                                        std::to_string(columns) + "\n" + overview + "unset multiplot\nset output\n");
+    if (plot && !gnuplot_available()) {
+      warnings.push_back("gnuplot not found: no PNG figures (the CSV and .gp files are written)");
+    } else if (plot) {
+      std::vector<fs::path> pngs;
+      for (const ExperimentSpec& x : spec.experiments) {
+        const std::string w = run_gnuplot(scratch / "curves", x.id + ".gp");
+        if (w.empty()) fs::rename(scratch / "curves" / (x.id + ".png.tmp"), scratch / "curves" / (x.id + ".png"));
+        if (w.empty()) pngs.push_back(fs::path("curves") / (x.id + ".png"));
+        else warnings.push_back(w);
+      }
+      const std::string w = run_gnuplot(scratch, spec.name + "_overview.gp");
+      if (w.empty()) {
+        fs::rename(scratch / (spec.name + "_overview.png.tmp"), scratch / (spec.name + "_overview.png"));
+        pngs.push_back(spec.name + "_overview.png");
+      } else {
+        warnings.push_back(w);
+      }
+      files.insert(files.end(), pngs.begin(), pngs.end());
+    }
+    fs::create_directories(dir / "curves");
+    for (const fs::path& f : files) fs::rename(scratch / f, dir / f);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(scratch, ec);
+    throw;
+  }
+  std::error_code ec;
+  fs::remove_all(scratch, ec);
+  return warnings;
+}
+
+}  // namespace acst::calibration

@@ -1,0 +1,47 @@
+// The calibrated Toyoura sets committed in data/parameters reproduce the objective their
+// committed reports state, from a fresh clone: the fit descriptions, the lab files, the sets and
+// the reports belong together.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "acst_calibration/fit_spec.hpp"
+#include "acst_calibration/problem.hpp"
+#include "test_materials.hpp"
+
+namespace acst::calibration {
+namespace {
+
+using nlohmann::json;
+
+struct Delivered {
+  const char* name;
+  const char* set;  // main parameter file; per-group files are set + "_" + group
+};
+
+class DeliveredSet : public ::testing::TestWithParam<Delivered> {};
+
+TEST_P(DeliveredSet, ReproducesItsReport) {
+  const Delivered d = GetParam();
+  const FitSpec spec = read_fit_spec(std::string(ACST_SOURCE_DIR) + "/data/calibration/" + d.name + "_fit.json");
+  const Problem problem(spec);
+  const json report = json::parse(test::read_text(std::string("data/calibration/reports/") + d.name + "/" + d.name + "_report.json"));
+  Eigen::VectorXd theta(static_cast<Eigen::Index>(problem.variables().size()));
+  for (std::size_t j = 0; j < problem.variables().size(); ++j) {
+    const Variable& v = problem.variables()[j];
+    const bool own_file = !v.group.empty() && v.group != spec.reference_group;
+    const json set = json::parse(test::read_text(std::string("data/parameters/") + d.set + (own_file ? "_" + v.group : "") + ".json"));
+    theta[static_cast<Eigen::Index>(j)] = set["parameters"][v.parameter].get<double>();
+    EXPECT_DOUBLE_EQ(theta[static_cast<Eigen::Index>(j)], report["parameters"][j]["value"].get<double>()) << v.label;
+  }
+  const double cost = problem.residuals({theta}).front().squaredNorm();
+  EXPECT_NEAR(cost, report["objective"]["sum_of_squares"].get<double>(), 1e-6 * cost);
+  EXPECT_EQ(report["experiments"].size(), spec.experiments.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Toyoura, DeliveredSet,
+                         ::testing::Values(Delivered{"toyoura_acst", "toyoura_acst_calibrated"},
+                                           Delivered{"toyoura_isotropic", "toyoura_isotropic_calibrated"}));
+
+}  // namespace
+}  // namespace acst::calibration
