@@ -200,10 +200,6 @@ SimulationOutcome Problem::simulate(const Simulation& sim, const Eigen::VectorXd
     const Parameters p = parameters(theta, x.group);
     validate(p);
     scene.material.emplace(p, sim.scene.material->options());
-    for (int i = 0; i < parameter_count; ++i) {
-      const std::string name = parameter_names[i];
-      if (scene.material_json["parameters"].contains(name)) scene.material_json["parameters"][name] = parameter_by_index(p, i);
-    }
     driver::RunResult run = driver::run_scene(scene);
     out.ok = run.ok;
     out.message = run.message;

@@ -40,17 +40,6 @@ std::string axis_title(const ExperimentSpec& x, const std::string& axis) {
   return x.stress_measure == StressMeasure::q_kPa ? "sigma_1 - sigma_3 [kPa]" : "sigma_1/sigma_3 [-]";
 }
 
-bool gnuplot_available() {
-  static const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
-  return found;
-}
-
-std::string shell_quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 // The gnuplot commands of one panel of experiment k; `dir` is where its CSV files are, seen from
 // the script.
 std::string panel(const Problem& problem, std::size_t k, const Series& s, std::size_t index, const std::string& dir) {
@@ -76,15 +65,13 @@ void write_text(const fs::path& p, const std::string& text) { driver::write_file
 
 // Runs gnuplot on `script` inside `dir`; returns a warning or "".
 std::string run_gnuplot(const fs::path& dir, const std::string& script) {
-  const std::string cmd = "cd " + shell_quoted(dir.string()) + " && gnuplot " + shell_quoted(script) + " >/dev/null 2>&1";
+  const std::string cmd = "cd " + driver::shell_quoted(dir.string()) + " && gnuplot " + driver::shell_quoted(script) + " >/dev/null 2>&1";
   return std::system(cmd.c_str()) == 0 ? "" : "gnuplot failed on " + (dir / script).string();
 }
 
 }  // namespace
 
-std::vector<ExperimentError> experiment_errors(const Problem& problem, const Eigen::VectorXd& theta,
-                                               const std::vector<SimulationOutcome>& outcomes) {
-  (void)theta;
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<SimulationOutcome>& outcomes) {
   const auto view = view_of(outcomes);
   std::vector<ExperimentError> errors;
   double total = 0.0;
@@ -320,7 +307,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
     if (per_group)
       for (const std::string& g : spec.groups)
         add(spec.name + "_parameters_" + g + ".json", fitted_material(problem, fit.theta, g).dump(2) + "\n");
-    const json report = report_json(problem, fit, experiment_errors(problem, fit.theta, outcomes), info);
+    const json report = report_json(problem, fit, experiment_errors(problem, outcomes), info);
     add(spec.name + "_report.json", report.dump(2) + "\n");
     add(spec.name + "_report.md", report_markdown(report));
 
@@ -371,7 +358,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
                                         " font ',8'\nset output '" + spec.name + "_overview.png.tmp'\nset datafile separator ','\n"
                                         "set key top left\nset grid\nset multiplot layout " + std::to_string(rows) + "," +
                                         std::to_string(columns) + "\n" + overview + "unset multiplot\nset output\n");
-    if (plot && !gnuplot_available()) {
+    if (plot && !driver::gnuplot_available()) {
       warnings.push_back("gnuplot not found: no PNG figures (the CSV and .gp files are written)");
     } else if (plot) {
       std::vector<fs::path> pngs;

@@ -22,17 +22,6 @@ std::string gp_quoted(const std::string& s) {  // a gnuplot single-quoted string
   return q + "'";
 }
 
-std::string shell_quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-bool gnuplot_available() {
-  static const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
-  return found;
-}
-
 // Linear interpolation of (x, y) samples (NaN entries skipped) at x; NaN outside their range.
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
   double x0 = NAN, y0 = NAN;
@@ -114,6 +103,18 @@ std::string log_ticks(double lo, double hi) {
 }
 
 }  // namespace
+
+std::string shell_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+bool gnuplot_available() {
+  static const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
+  return found;
+}
+
 
 std::string write_figure(const Scene& scene, const RunResult& result, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path) {

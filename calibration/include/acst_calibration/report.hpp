@@ -31,8 +31,7 @@ struct ExperimentError {
   std::vector<AxisError> axes;
 };
 
-std::vector<ExperimentError> experiment_errors(const Problem& problem, const Eigen::VectorXd& theta,
-                                               const std::vector<SimulationOutcome>& outcomes);
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<SimulationOutcome>& outcomes);
 
 struct RunInfo {
   double total_seconds = 0.0;  // from reading the description to the end of the fit (before writing)

@@ -19,6 +19,10 @@ void write_file_atomically(const std::string& path, const std::string& text);
 // Writes the 2x2 figure (q and e_v against axial strain, e against log p, q against p, lab
 // curves as points) to png_path with gnuplot, keeping the script at gp_path. Returns "" on
 // success, otherwise a warning (gnuplot missing or failed); the CSV is never affected.
+// Whether gnuplot is on PATH (looked up once), and a string quoted for the POSIX shell.
+bool gnuplot_available();
+std::string shell_quoted(const std::string& s);
+
 std::string write_figure(const Scene& scene, const RunResult& result, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path);
 
