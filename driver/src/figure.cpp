@@ -16,11 +16,6 @@ namespace acst::driver {
 
 namespace {
 
-std::string gp_quoted(const std::string& s) {  // a gnuplot single-quoted string
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
 
 // Linear interpolation of (x, y) samples (NaN entries skipped) at x; NaN outside their range.
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
@@ -104,24 +99,10 @@ std::string log_ticks(double lo, double hi) {
 
 }  // namespace
 
-std::string shell_quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-bool gnuplot_available() {
-  static const bool found = std::system("command -v gnuplot >/dev/null 2>&1") == 0;
-  return found;
-}
-
-
 std::string write_figure(const Scene& scene, const RunResult& result, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path) {
   if (!gnuplot_available()) return "gnuplot was not found on PATH: no PNG written (the CSV is complete)";
   const Parameters& par = scene.material->parameters();
-  const std::string tmp_png = (std::filesystem::path(png_path).parent_path() /
-                               ("." + std::filesystem::path(png_path).filename().string() + ".tmp" + std::to_string(::getpid()))).string();
   std::vector<LabBlocks> labs;
   for (const auto& file : scene.lab_data) {
     try {
@@ -235,28 +216,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
   if (q_lo < 0.0) gp << ", " << -par.c * par.Mc << " * x dt 3 lc rgb 'gray60' title 'q = -c Mc p'";
   gp << lab_plots("pq") << "\n";
   gp << "unset multiplot\nset output\n";
-  try {
-    write_file_atomically(gp_path, gp.str());
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  const std::string log = tmp_png + ".log";
-  const std::string cmd = "gnuplot -e " + shell_quoted("png=" + gp_quoted(tmp_png)) + " " + shell_quoted(gp_path) + " >" + shell_quoted(log) + " 2>&1";
-  const int rc = std::system(cmd.c_str());
-  std::string warning;
-  if (rc != 0) {
-    std::ifstream in(log);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    warning = "gnuplot failed (exit " + std::to_string(rc) + "): " + ss.str().substr(0, 600);
-    std::remove(tmp_png.c_str());
-  } else {
-    std::error_code ec;
-    std::filesystem::rename(tmp_png, png_path, ec);
-    if (ec) warning = "cannot rename the PNG: " + ec.message();
-  }
-  std::remove(log.c_str());
-  return warning;
+  return run_gnuplot(gp.str(), gp_path, png_path);
 }
 
 }  // namespace acst::driver

@@ -1,21 +1,28 @@
-// The C ABI: thin wrappers over acst::Material that never let an exception escape.
+// The C ABI: thin wrappers over acst::Material and the reference materials that never let an
+// exception escape.
+#include <Eigen/LU>  // determinant of the rotation
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <new>
 #include <string>
+#include <variant>
 
 #include "abi_convention.hpp"
 #include "acst.h"
 #include "acst/elasticity.hpp"
 #include "acst/fabric.hpp"
+#include "acst/json_input.hpp"
 #include "acst/material.hpp"
+#include "acst/reference/linear_elastic.hpp"
+#include "acst/reference/von_mises.hpp"
 #include "c_abi_support.hpp"
 #include "state_layout.hpp"
 
 struct acst_model {
-  acst::Material material;
+  acst::AnyModel kind;
 };
 
 namespace acst::abi {
@@ -73,6 +80,57 @@ acst_status update_point(double* stress, double* statev, double* tangent, const 
   return ok_status();
 }
 
+// Entry checks of the closed-form updates, reported like the integrator's.
+bool entry_ok(const Sym& stress, bool state_ok, const Sym& strain_increment, integration::Report& rep) {
+  rep = integration::Report{};
+  if (!strain_increment.allFinite())
+    rep.status = integration::Status::invalid_input;
+  else if (!stress.allFinite() || !state_ok)
+    rep.status = integration::Status::nonphysical_state;
+  return rep.status == integration::Status::ok;
+}
+
+acst_status update_point(double* stress, double*, double* tangent, const reference::LinearElastic& m,
+                         const double* dstrain, integration::Report& rep) {
+  const Sym s = stress_to_model(stress), deps = strain_to_model(dstrain);
+  if (!entry_ok(s, true, deps, rep)) return status_from_report(rep);
+  stress_from_model(reference::updated_stress(m, s, deps), stress);
+  if (tangent) tangent_from_model(reference::stiffness(m), tangent);
+  return ok_status();
+}
+
+acst_status update_point(double* stress, double* statev, double* tangent, const reference::VonMises& m,
+                         const double* dstrain, integration::Report& rep) {
+  reference::VonMisesPoint point{stress_to_model(stress), statev[0]};
+  const Sym deps = strain_to_model(dstrain);
+  const bool state_ok = std::isfinite(point.equivalent_plastic_strain) && point.equivalent_plastic_strain >= 0.0;
+  if (!entry_ok(point.stress, state_ok, deps, rep)) return status_from_report(rep);
+  Mat6 D;
+  rep.plastic = reference::radial_return(m, point, deps, tangent ? &D : nullptr);
+  stress_from_model(point.stress, stress);
+  statev[0] = point.equivalent_plastic_strain;
+  if (tangent) tangent_from_model(D, tangent);
+  return ok_status();
+}
+
+acst_status update_any(double* stress, double* statev, double* tangent, const acst_model& model,
+                       const double* dstrain, integration::Report& rep) {
+  return std::visit([&](const auto& m) { return update_point(stress, statev, tangent, m, dstrain, rep); },
+                    model.kind);
+}
+
+const Material* sand_model(const acst_model& model) { return std::get_if<Material>(&model.kind); }
+
+ElasticModuli reference_moduli(const acst_model& model) {
+  if (const auto* m = std::get_if<reference::VonMises>(&model.kind)) return reference::moduli(m->elastic);
+  return reference::moduli(std::get<reference::LinearElastic>(model.kind));
+}
+
+int state_size_of(const acst_model& model) {
+  if (sand_model(model)) return state_size;
+  return std::holds_alternative<reference::VonMises>(model.kind) ? von_mises_state_size : 0;
+}
+
 }  // namespace acst::abi
 
 using namespace acst::abi;
@@ -100,26 +158,53 @@ acst_status acst_model_create(acst_model** model, const char* json_text) {
   *model = nullptr;
   ACST_REQUIRE(json_text, "acst_model_create: JSON text is NULL");
   ACST_GUARD({
-    *model = new acst_model{acst::Material::from_json(json_text)};
+    *model = new acst_model{acst::any_model_from_json(json_text)};
     return ok_status();
   })
 }
 
 void acst_model_destroy(acst_model* model) { delete model; }
 
-int acst_state_size(const acst_model*) { return state_size; }
+int acst_state_size(const acst_model* model) { return model ? state_size_of(*model) : 0; }
 
-const char* acst_state_name(const acst_model*, int i) { return (i >= 0 && i < state_size) ? state_names[i] : nullptr; }
+const char* acst_state_name(const acst_model* model, int i) {
+  if (!model || i < 0 || i >= state_size_of(*model)) return nullptr;
+  return sand_model(*model) ? state_names[i] : von_mises_state_names[i];
+}
+
+const char* acst_model_kind(const acst_model* model) {
+  if (!model) return nullptr;
+  if (const acst::Material* sand = sand_model(*model))
+    return sand->parameters().variant == acst::Variant::isotropic ? "isotropic" : "ACST";
+  return std::holds_alternative<acst::reference::VonMises>(model->kind) ? "von_mises" : "linear_elastic";
+}
 
 acst_status acst_initial_state(double* statev, double* stress_out, const acst_model* model, const double* stress0,
                                double void_ratio, const double* deposition_direction) {
-  ACST_REQUIRE(statev && stress_out && model && stress0 && deposition_direction,
+  ACST_REQUIRE(stress_out && model && stress0 && (statev || state_size_of(*model) == 0),
                "acst_initial_state: a pointer argument is NULL");
+  const acst::Material* sand = sand_model(*model);
+  ACST_REQUIRE(deposition_direction || !sand, "acst_initial_state: a pointer argument is NULL");
   ACST_GUARD({
-    const Eigen::Vector3d b(deposition_direction[0], deposition_direction[1], deposition_direction[2]);
-    const acst::State s = model->material.initial_state(stress_to_model(stress0), void_ratio, b);
-    store_state(s, statev);
-    stress_from_model(s.stress, stress_out);
+    if (sand) {
+      const Eigen::Vector3d b(deposition_direction[0], deposition_direction[1], deposition_direction[2]);
+      const acst::State s = sand->initial_state(stress_to_model(stress0), void_ratio, b);
+      store_state(s, statev);
+      stress_from_model(s.stress, stress_out);
+      return ok_status();
+    }
+    const acst::Sym s = stress_to_model(stress0);
+    ACST_REQUIRE(s.allFinite(), "acst_initial_state: initial stress is not finite");
+    if (const auto* vm = std::get_if<acst::reference::VonMises>(&model->kind)) {
+      if (!acst::reference::within_yield_surface(*vm, s))
+        return make_status(ACST_NONPHYSICAL_STATE,
+                           "acst_initial_state: initial stress lies outside the von Mises yield surface (q = " +
+                               std::to_string(acst::reference::equivalent_stress(s)) +
+                               " kPa > yield_stress = " + std::to_string(vm->yield_stress) + " kPa)",
+                           1.0);
+      statev[0] = 0.0;
+    }
+    stress_from_model(s, stress_out);
     return ok_status();
   })
 }
@@ -139,18 +224,21 @@ acst_status acst_bedding_direction(double* b, double alpha_degrees, int major_ax
 acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst_model* model,
                                                   double relative_density) {
   ACST_REQUIRE(void_ratio && model, "acst_void_ratio_from_relative_density: a pointer argument is NULL");
+  const acst::Material* sand = sand_model(*model);
+  ACST_REQUIRE(sand, "acst_void_ratio_from_relative_density: only for sand models (ACST, isotropic)");
   ACST_REQUIRE(relative_density >= 0.0 && relative_density <= 1.0,
                "acst_void_ratio_from_relative_density: relative density must lie in [0, 1]");
-  *void_ratio = acst::void_ratio_from_relative_density(model->material.parameters(), relative_density);
+  *void_ratio = acst::void_ratio_from_relative_density(sand->parameters(), relative_density);
   return ok_status();
 }
 
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain) {
-  ACST_REQUIRE(stress && statev && model && dstrain, "acst_update: a required pointer argument is NULL");
+  ACST_REQUIRE(stress && model && dstrain && (statev || state_size_of(*model) == 0),
+               "acst_update: a required pointer argument is NULL");
   ACST_GUARD({
     acst::integration::Report rep;
-    const acst_status st = update_point(stress, statev, tangent, model->material, dstrain, rep);
+    const acst_status st = update_any(stress, statev, tangent, *model, dstrain, rep);
     if (counters) copy_counters(rep, counters);
     return st;
   })
@@ -159,17 +247,21 @@ acst_status acst_update(double* stress, double* statev, double* tangent, acst_co
 acst_status acst_update_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
                               int* point_status, acst_counters* counters, const acst_model* model, size_t n,
                               const double* dstrain, size_t dstrain_stride) {
-  ACST_REQUIRE(model && (n == 0 || (stress && statev && dstrain)), "acst_update_batch: a required pointer is NULL");
-  ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= (size_t)state_size && dstrain_stride >= 6),
-               "acst_update_batch: strides must be at least 6 (stress, strain) and ACST_NSTATV (state)");
+  ACST_REQUIRE(model, "acst_update_batch: a required pointer is NULL");
+  const size_t nstatv = static_cast<size_t>(state_size_of(*model));
+  ACST_REQUIRE(n == 0 || (stress && dstrain && (statev || nstatv == 0)),
+               "acst_update_batch: a required pointer is NULL");
+  ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv && dstrain_stride >= 6),
+               "acst_update_batch: strides must be at least 6 (stress, strain) and acst_state_size (state)");
   ACST_GUARD({
     acst_status first = ok_status();
     acst::integration::Report rep;
     acst::integration::Counters total;
     int plastic = 0;
     for (size_t i = 0; i < n; ++i) {
-      const acst_status st = update_point(stress + i * stress_stride, statev + i * statev_stride, nullptr,
-                                          model->material, dstrain + i * dstrain_stride, rep);
+      double* point_statev = statev ? statev + i * statev_stride : nullptr;
+      const acst_status st =
+          update_any(stress + i * stress_stride, point_statev, nullptr, *model, dstrain + i * dstrain_stride, rep);
       total += rep.counters;
       plastic += rep.plastic;
       if (point_status) point_status[i] = st.code;
@@ -187,14 +279,21 @@ acst_status acst_update_batch(double* stress, size_t stress_stride, double* stat
 
 acst_status acst_wave_speed(double* speed, const acst_model* model, const double* stress, const double* statev,
                             double density) {
-  ACST_REQUIRE(speed && model && stress && statev, "acst_wave_speed: a pointer argument is NULL");
+  ACST_REQUIRE(speed && model && stress && (statev || state_size_of(*model) == 0),
+               "acst_wave_speed: a pointer argument is NULL");
   ACST_REQUIRE(density > 0.0 && std::isfinite(density), "acst_wave_speed: density must be positive (kg/m^3)");
   ACST_GUARD({
-    acst::State s;
-    s.stress = stress_to_model(stress);
-    fill_state(s, statev);
-    const acst::Diagnostics d = model->material.diagnostics(s);
-    *speed = std::sqrt(acst::constrained_modulus({d.G, d.K}) * 1000.0 / density);  // kPa -> Pa
+    acst::ElasticModuli moduli;
+    if (const acst::Material* sand = sand_model(*model)) {
+      acst::State s;
+      s.stress = stress_to_model(stress);
+      fill_state(s, statev);
+      const acst::Diagnostics d = sand->diagnostics(s);
+      moduli = {d.G, d.K};
+    } else {
+      moduli = reference_moduli(*model);
+    }
+    *speed = std::sqrt(acst::constrained_modulus(moduli) * 1000.0 / density);  // kPa -> Pa
     ACST_REQUIRE(std::isfinite(*speed), "acst_wave_speed: state gives a non-finite stiffness");
     return ok_status();
   })
@@ -206,17 +305,41 @@ static const char* const diagnostic_names[ACST_NDIAGNOSTICS] = {"p", "q", "R", "
 const char* acst_diagnostic_name(int i) { return (i >= 0 && i < ACST_NDIAGNOSTICS) ? diagnostic_names[i] : nullptr; }
 
 acst_status acst_diagnostics(double* out, const acst_model* model, const double* stress, const double* statev) {
-  ACST_REQUIRE(out && model && stress && statev, "acst_diagnostics: a pointer argument is NULL");
+  ACST_REQUIRE(out && model && stress && (statev || state_size_of(*model) == 0),
+               "acst_diagnostics: a pointer argument is NULL");
   ACST_GUARD({
-    acst::State s;
-    s.stress = stress_to_model(stress);
-    fill_state(s, statev);
-    const acst::Diagnostics d = model->material.diagnostics(s);
-    const double v[ACST_NDIAGNOSTICS] = {d.p,           d.q,   d.R, d.sin3theta, d.psi, d.zeta, d.A,
-                                         d.fabric_norm, d.critical_void_ratio, d.D, d.Kp, d.G, d.K};
+    const acst::Sym sigma = stress_to_model(stress);
+    if (const acst::Material* sand = sand_model(*model)) {
+      acst::State s;
+      s.stress = sigma;
+      fill_state(s, statev);
+      const acst::Diagnostics d = sand->diagnostics(s);
+      const double v[ACST_NDIAGNOSTICS] = {d.p,           d.q,   d.R, d.sin3theta, d.psi, d.zeta, d.A,
+                                           d.fabric_norm, d.critical_void_ratio, d.D, d.Kp, d.G, d.K};
+      std::memcpy(out, v, sizeof v);
+      return ok_status();
+    }
+    // The sand-specific entries (R ... Kp) have no meaning for the reference materials.
+    const acst::ElasticModuli m = reference_moduli(*model);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double v[ACST_NDIAGNOSTICS] = {acst::trace(sigma) / 3.0, acst::reference::equivalent_stress(sigma),
+                                         nan, nan, nan, nan, nan, nan, nan, nan, nan, m.G, m.K};
     std::memcpy(out, v, sizeof v);
     return ok_status();
   })
+}
+
+acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation) {
+  ACST_REQUIRE(stress && model && rotation && (statev || state_size_of(*model) == 0),
+               "acst_rotate_state: a required pointer argument is NULL");
+  const Eigen::Matrix3d Q = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rotation);
+  ACST_REQUIRE(Q.allFinite() && (Q * Q.transpose() - Eigen::Matrix3d::Identity()).norm() < 1e-8 &&
+                   Q.determinant() > 0.0,
+               "acst_rotate_state: rotation must be a finite proper orthogonal 3x3 matrix, row-major "
+               "(|Q Q^T - I| < 1e-8, det Q > 0)");
+  stress_from_model(acst::rotate(stress_to_model(stress), Q), stress);
+  if (sand_model(*model)) rotate_tensorial_state(statev, Q);
+  return ok_status();
 }
 
 }  // extern "C"

@@ -1,5 +1,7 @@
 #pragma once
-// Layout of the state-variable array shared by the acst_* functions and umat_.
+// Layout of the state-variable arrays of each model kind, shared by the acst_* functions and umat_.
+#include <Eigen/Core>
+
 #include "acst/state.hpp"
 
 namespace acst::abi {
@@ -25,5 +27,15 @@ inline void store_state(const State& s, double* statev) {
   statev[8] = s.substep_hint;
   statev[9] = s.pressure_floor_resets;
 }
+
+// The fabric tensor is the only tensorial entry: it turns with the material (F -> Q F Q^T).
+inline void rotate_tensorial_state(double* statev, const Eigen::Matrix3d& Q) {
+  Eigen::Map<Sym> fabric(statev);
+  fabric = rotate(fabric, Q);
+}
+
+// linear_elastic has no state; von_mises one scalar.
+inline constexpr int von_mises_state_size = 1;
+inline constexpr const char* von_mises_state_names[von_mises_state_size] = {"equivalent_plastic_strain"};
 
 }  // namespace acst::abi

@@ -1,5 +1,15 @@
 /* acst.h: C ABI of the ACST sand model library (anisotropic critical state theory,
- * Li & Dafalias 2012, multiaxial form of Gao et al. 2014) and its isotropic reduction.
+ * Li & Dafalias 2012, multiaxial form of Gao et al. 2014) and its isotropic reduction, with two
+ * closed-form verification materials behind the same handle.
+ *
+ * MODEL KINDS ("model" in the JSON of acst_model_create; acst_model_kind tells them apart):
+ *   "ACST", "isotropic": the sand model; "parameters" as in docs/c-abi.md, optional
+ *       "integrator"; 10 state variables (fabric F11..F23, void ratio, H, substep hint, resets).
+ *   "linear_elastic": {"E": kPa > 0, "nu": in (-1, 0.5)}; no state variables.
+ *   "von_mises": perfectly plastic, associated, radial return; {"E", "nu", and exactly one of
+ *       "yield_stress" (sigma_y, kPa > 0) or "undrained_shear_strength" (s_u, kPa > 0, sigma_y =
+ *       sqrt(3) s_u: max shear s_u in plane strain)}; 1 state variable, equivalent_plastic_strain.
+ *   The two verification kinds take no "integrator" key.
  *
  * CONVENTION AT THIS INTERFACE (the Abaqus UMAT convention; the C++ API differs):
  *   - Voigt order 11, 22, 33, 12, 13, 23;
@@ -57,22 +67,29 @@ typedef struct acst_counters {
 } acst_counters;
 
 #define ACST_NTENS 6
-#define ACST_NSTATV 10
+#define ACST_NSTATV 10 /* state size of ACST/isotropic, the largest of any kind */
 #define ACST_NDIAGNOSTICS 13
 
 /* Creates a model from JSON text:
- *   {"model": "ACST"|"isotropic", "parameters": {...}, "integrator": {...}}
- * (see docs/c-abi.md). On failure *model is NULL and the message names the JSON path. */
+ *   {"model": "ACST"|"isotropic"|"linear_elastic"|"von_mises", "parameters": {...}, "integrator": {...}}
+ * (see docs/c-abi.md; "model" defaults to "ACST"). On failure *model is NULL and the message
+ * names the JSON path and the allowed range. */
 acst_status acst_model_create(acst_model** model, const char* json_text);
 void acst_model_destroy(acst_model* model);
 
-/* Number of state variables (ACST_NSTATV) and the name of variable i (NULL if out of range). */
+/* "ACST", "isotropic", "linear_elastic" or "von_mises" (NULL for a NULL handle). */
+const char* acst_model_kind(const acst_model* model);
+
+/* Number of state variables of this model (10, 0 or 1; 0 for a NULL handle) and the name of
+ * variable i (NULL if out of range). Where the size is 0, every statev argument may be NULL. */
 int acst_state_size(const acst_model* model);
 const char* acst_state_name(const acst_model* model, int i);
 
 /* Initial stress (this interface's convention) and state from a stress, a void ratio and the
  * deposition direction (normal to the bedding planes, any non-zero length).
- * stress_out may alias stress0. */
+ * stress_out may alias stress0. The verification kinds copy the stress, zero the state and ignore
+ * void ratio and direction (which may be NULL); von_mises gives ACST_NONPHYSICAL_STATE for a
+ * stress outside its yield surface (relative tolerance 1e-9). */
 acst_status acst_initial_state(double* statev, double* stress_out, const acst_model* model, const double* stress0,
                                double void_ratio, const double* deposition_direction);
 
@@ -83,36 +100,50 @@ acst_status acst_initial_state(double* statev, double* stress_out, const acst_mo
 acst_status acst_bedding_direction(double* b, double alpha_degrees, int major_axis, int minor_axis,
                                    double minor_sign);
 
-/* Void ratio from a relative density Dr in [0, 1]: e = e_max - Dr (e_max - e_min). */
+/* Void ratio from a relative density Dr in [0, 1]: e = e_max - Dr (e_max - e_min). Sand models
+ * only (ACST_INVALID_INPUT otherwise). */
 acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst_model* model,
                                                   double relative_density);
 
-/* One stress update: stress[6] and statev[ACST_NSTATV] in and out, dstrain[6] in.
+/* One stress update: stress[6] and statev[acst_state_size] in and out, dstrain[6] in.
  * tangent (36 doubles) and counters are optional (NULL). On any failure stress and statev are
- * left unchanged. */
+ * left unchanged. The verification kinds return the elastic matrix or the consistent
+ * elastoplastic tangent of the radial return, and zero counters except plastic (1 if von_mises
+ * yielded). Hosts with large rotations call acst_rotate_state first. */
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain);
 
-/* The same over n points; strides are in doubles between consecutive points. point_status
+/* The same over n points; strides are in doubles between consecutive points (statev_stride at
+ * least acst_state_size). point_status
  * (n ints, optional) receives each point's code; the returned status is the first failure,
  * its message naming the point. All points are attempted. */
 acst_status acst_update_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
                               int* point_status, acst_counters* counters, const acst_model* model, size_t n,
                               const double* dstrain, size_t dstrain_stride);
 
-/* P-wave speed sqrt((K + 4G/3)/rho) in m/s from the current elastic stiffness, for explicit
- * time steps; density in kg/m^3. */
+/* P-wave speed sqrt((K + 4G/3)/rho) in m/s from the current elastic stiffness (from E and nu for
+ * the verification kinds), for explicit time steps; density in kg/m^3. */
 acst_status acst_wave_speed(double* speed, const acst_model* model, const double* stress, const double* statev,
                             double density);
 
 /* Derived quantities (ACST_NDIAGNOSTICS doubles, named by acst_diagnostic_name):
  * p, q, R, sin3theta, psi, zeta, A, fabric_norm, e_c, D, Kp, G, K (stresses kPa, compression
- * positive). The loading direction is the one of the current stress ratio. */
+ * positive). The loading direction is the one of the current stress ratio. The verification
+ * kinds fill p, q, G, K and set the sand-specific entries to NaN. */
 acst_status acst_diagnostics(double* out, const acst_model* model, const double* stress, const double* statev);
 const char* acst_diagnostic_name(int i);
 
-/* Abaqus-compatible entry point (standard UMAT argument list; see docs/c-abi.md for the PROPS
- * and STATEV layouts). NTENS = 6 (3-D) or 4 (plane strain / axisymmetric: 11, 22, 33, 12).
+/* Objective rotation of one point: stress <- Q stress Q^T and every tensorial state variable
+ * likewise (the fabric, slots 0-5, of ACST/isotropic; none for the verification kinds).
+ * rotation: 3x3 proper orthogonal, row-major (finite, |Q Q^T - I| < 1e-8, det Q > 0, else
+ * ACST_INVALID_INPUT with stress and statev unchanged). Hosts with large rotations (MPM, updated
+ * Lagrangian FE) call it before each acst_update with the incremental rotation of the step,
+ * e.g. Hughes-Winget Q = (I - W/2)^-1 (I + W/2) with W = dt skew(L), L the velocity gradient,
+ * then update with the strain increment dt sym(L) (engineering shear). */
+acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation);
+
+/* Abaqus-compatible entry point for the ACST model only (standard UMAT argument list; see
+ * docs/c-abi.md for the PROPS and STATEV layouts). NTENS = 6 (3-D) or 4 (plane strain / axisymmetric: 11, 22, 33, 12).
  * Failures set PNEWDT = suggested step factor (< 1) and leave STRESS and STATEV unchanged. */
 void umat_(double* stress, double* statev, double* ddsdde, double* sse, double* spd, double* scd, double* rpl,
            double* ddsddt, double* drplde, double* drpldt, const double* stran, const double* dstran,

@@ -1,6 +1,9 @@
 #include "acst/json_input.hpp"
 
+#include <cmath>
+#include <limits>
 #include <set>
+#include <sstream>
 
 #include "acst/material.hpp"
 
@@ -29,6 +32,50 @@ double number_at(const json& j, const std::string& key, const std::string& path)
   const json& v = j.at(key);
   if (!v.is_number()) throw InputError(path + "/" + key + ": expected a number, got " + v.type_name());
   return v.get<double>();
+}
+
+// A required number in the open interval (lo, hi).
+double number_in_open_range(const json& j, const std::string& key, const std::string& path, double lo, double hi) {
+  if (!j.contains(key)) throw InputError(path + "/" + key + ": required parameter is missing");
+  const double v = number_at(j, key, path);
+  if (!(v > lo && v < hi)) {
+    std::ostringstream os;
+    os << path << "/" << key << " = " << v << ": parameter '" << key << "' is outside its allowed range (" << lo
+       << ", ";
+    if (std::isinf(hi))
+      os << "inf)";
+    else
+      os << hi << ")";
+    throw InputError(os.str());
+  }
+  return v;
+}
+
+constexpr double unbounded = std::numeric_limits<double>::infinity();
+
+reference::LinearElastic elastic_constants(const json& j, const std::string& path) {
+  return {number_in_open_range(j, "E", path, 0.0, unbounded), number_in_open_range(j, "nu", path, -1.0, 0.5)};
+}
+
+json parse_object(const std::string& text) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
+    throw InputError(std::string("material JSON does not parse: ") + e.what());
+  }
+  require_object(j, "");
+  reject_unknown_keys(j, {"model", "parameters", "integrator"}, "");
+  if (!j.contains("parameters")) throw InputError("/parameters: required object is missing");
+  return j;
+}
+
+Material material_from_document(const json& j) {
+  const Variant v = j.contains("model") ? variant_from_json(j["model"], "/model") : Variant::anisotropic;
+  const Parameters p = parameters_from_json(j["parameters"], v, "/parameters");
+  const integration::Options o =
+      j.contains("integrator") ? options_from_json(j["integrator"], "/integrator") : integration::Options{};
+  return Material(p, o);
 }
 
 }  // namespace
@@ -123,21 +170,42 @@ integration::Options options_from_json(const json& j, const std::string& path) {
   return o;
 }
 
-Material Material::from_json(const std::string& text) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
-    throw InputError(std::string("material JSON does not parse: ") + e.what());
-  }
-  require_object(j, "");
-  reject_unknown_keys(j, {"model", "parameters", "integrator"}, "");
-  if (!j.contains("parameters")) throw InputError("/parameters: required object is missing");
-  const Variant v = j.contains("model") ? variant_from_json(j["model"], "/model") : Variant::anisotropic;
-  const Parameters p = parameters_from_json(j["parameters"], v, "/parameters");
-  const integration::Options o =
-      j.contains("integrator") ? options_from_json(j["integrator"], "/integrator") : integration::Options{};
-  return Material(p, o);
+Material Material::from_json(const std::string& text) { return material_from_document(parse_object(text)); }
+
+reference::LinearElastic linear_elastic_from_json(const json& j, const std::string& path) {
+  require_object(j, path);
+  reject_unknown_keys(j, {"E", "nu"}, path);
+  return elastic_constants(j, path);
+}
+
+reference::VonMises von_mises_from_json(const json& j, const std::string& path) {
+  require_object(j, path);
+  reject_unknown_keys(j, {"E", "nu", "yield_stress", "undrained_shear_strength"}, path);
+  const bool by_yield_stress = j.contains("yield_stress");
+  if (by_yield_stress == j.contains("undrained_shear_strength"))
+    throw InputError(path + ": give exactly one of yield_stress or undrained_shear_strength (kPa, > 0)");
+  const reference::LinearElastic elastic = elastic_constants(j, path);
+  const double yield_stress =
+      by_yield_stress ? number_in_open_range(j, "yield_stress", path, 0.0, unbounded)
+                      : std::sqrt(3.0) * number_in_open_range(j, "undrained_shear_strength", path, 0.0, unbounded);
+  return {elastic, yield_stress};
+}
+
+AnyModel any_model_from_json(const std::string& text) {
+  const json j = parse_object(text);
+  if (!j.contains("model")) return material_from_document(j);
+  const json& model = j["model"];
+  const char* const allowed = "(allowed: ACST, isotropic, linear_elastic, von_mises)";
+  if (!model.is_string())
+    throw InputError(std::string("/model: expected a string ") + allowed + ", got " + model.type_name());
+  const std::string kind = model.get<std::string>();
+  if (kind == "ACST" || kind == "isotropic") return material_from_document(j);
+  if (kind != "linear_elastic" && kind != "von_mises")
+    throw InputError("/model: unknown model '" + kind + "' " + allowed);
+  if (j.contains("integrator"))
+    throw InputError("/integrator: model '" + kind + "' has a closed-form update and takes no integrator options");
+  if (kind == "linear_elastic") return linear_elastic_from_json(j["parameters"], "/parameters");
+  return von_mises_from_json(j["parameters"], "/parameters");
 }
 
 }  // namespace acst

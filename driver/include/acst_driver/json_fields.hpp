@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "acst_driver/scene.hpp"
+#include "acst_driver/scene_error.hpp"
 
 namespace acst::driver::fields {
 

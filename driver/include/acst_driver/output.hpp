@@ -5,6 +5,7 @@
 // leaves a half-written file over a good one.
 #include <string>
 
+#include "acst_driver/files.hpp"
 #include "acst_driver/runner.hpp"
 #include "acst_driver/scene.hpp"
 
@@ -13,16 +14,9 @@ namespace acst::driver {
 // The CSV text of a run (header comments, column names, one line per record).
 std::string csv_text(const Scene& scene, const RunResult& result);
 
-// Writes `text` to `path` through a temporary file and a rename; throws std::runtime_error.
-void write_file_atomically(const std::string& path, const std::string& text);
-
 // Writes the 2x2 figure (q and e_v against axial strain, e against log p, q against p, lab
 // curves as points) to png_path with gnuplot, keeping the script at gp_path. Returns "" on
 // success, otherwise a warning (gnuplot missing or failed); the CSV is never affected.
-// Whether gnuplot is on PATH (looked up once), and a string quoted for the POSIX shell.
-bool gnuplot_available();
-std::string shell_quoted(const std::string& s);
-
 std::string write_figure(const Scene& scene, const RunResult& result, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path);
 

@@ -14,13 +14,10 @@
 
 #include "acst/material.hpp"
 #include "acst_driver/mixed_control.hpp"
+#include "acst_driver/scene_error.hpp"
 
 namespace acst::driver {
 
-// Thrown for any invalid scene; the message starts with the JSON path (e.g. /steps/2/exit/q_above).
-struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Six rows of A d_sigma + B d_eps = c over a step. A row's `value` is either its change over the
 // segment, or (absolute) the value its expression A sigma + B eps must reach at the end of the

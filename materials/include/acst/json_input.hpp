@@ -2,9 +2,13 @@
 // Reading parameters and integrator options from JSON, with errors that name the JSON path.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <variant>
 
 #include "acst/integration/options.hpp"
+#include "acst/material.hpp"
 #include "acst/parameters.hpp"
+#include "acst/reference/linear_elastic.hpp"
+#include "acst/reference/von_mises.hpp"
 
 namespace acst {
 
@@ -17,5 +21,20 @@ integration::Options options_from_json(const nlohmann::json& j, const std::strin
 
 // "ACST" or "isotropic".
 Variant variant_from_json(const nlohmann::json& j, const std::string& path);
+
+// {"E": kPa > 0, "nu": in (-1, 0.5)}; unknown keys rejected.
+reference::LinearElastic linear_elastic_from_json(const nlohmann::json& j, const std::string& path);
+
+// {"E", "nu", and exactly one of "yield_stress" (sigma_y) or "undrained_shear_strength" (s_u,
+// sigma_y = sqrt(3) s_u)}, both kPa > 0; unknown keys rejected.
+reference::VonMises von_mises_from_json(const nlohmann::json& j, const std::string& path);
+
+// Every model the C ABI offers behind one handle.
+using AnyModel = std::variant<Material, reference::LinearElastic, reference::VonMises>;
+
+// {"model": "ACST"|"isotropic"|"linear_elastic"|"von_mises", "parameters": {...}, "integrator": {...}};
+// "model" defaults to ACST; the two reference models have no integrator and reject that key.
+// ACST and isotropic read exactly as Material::from_json.
+AnyModel any_model_from_json(const std::string& json_text);
 
 }  // namespace acst

@@ -1,0 +1,57 @@
+#pragma once
+// The adapter between the MPM core and the material library: it reaches the material ONLY
+// through the C ABI (acst.h). Per particle it turns the velocity gradient into a strain
+// increment and an incremental rotation, rotates stress and fabric objectively (Hughes-Winget)
+// through acst_rotate_state, then calls acst_update. The MPM core stores stress in the ABI's
+// convention (tension positive, Voigt xx yy zz xy xz yz, kPa): no conversion happens here.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "acst.h"
+
+namespace acst::mpm {
+
+struct MaterialError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One material: an owning handle plus what the core needs to know about it.
+class Material {
+ public:
+  static constexpr int max_state_size = 64;
+
+  // json_text: {"model": ..., "parameters": ...} as acst_model_create reads it; `name` is used
+  // in messages. Throws MaterialError with the library's message.
+  Material(const std::string& name, const std::string& json_text);
+
+  const std::string& name() const { return name_; }
+  std::string kind() const;
+  int state_size() const { return state_size_; }
+  std::vector<std::string> state_names() const;
+  const acst_model* handle() const { return model_.get(); }
+  bool is_sand() const;
+
+  // Initial state from a stress (ABI convention), void ratio and deposition direction.
+  void initial_state(double* statev, double* stress, double void_ratio, const double* deposition) const;
+  double void_ratio_from_relative_density(double Dr) const;
+  double wave_speed(const double* stress, const double* statev, double density) const;
+  // acst_diagnostics: p, q, R, sin3theta, psi, zeta, A, fabric_norm, e_c, D, Kp, G, K.
+  void diagnostics(double* out, const double* stress, const double* statev) const;
+  // Index of a state variable by name, -1 if the material has none.
+  int state_index(const std::string& name) const;
+
+  // Plane-strain update over dt from the velocity gradient L (row-major 2x2, L_ij = dv_i/dx_j):
+  // rotates, then integrates the strain increment, retrying in up to 64 sub-increments when the
+  // integrator asks for a smaller one. Returns ACST_OK or the failing status (stress and state
+  // then keep their last good values).
+  acst_status update(double* stress, double* statev, const double* L, double dt) const;
+
+ private:
+  std::string name_;
+  std::unique_ptr<acst_model, void (*)(acst_model*)> model_;
+  int state_size_ = 0;
+};
+
+}  // namespace acst::mpm

@@ -1,0 +1,22 @@
+#pragma once
+// Files of an MPM run, each written to a temporary name and renamed when complete: the load
+// record as CSV, particle fields as VTK XML PolyData (.vtp) with a ParaView .pvd series, and PNG
+// figures through gnuplot (load-settlement with lab data, contours of particle fields).
+#include <string>
+#include <vector>
+
+#include "acst_mpm/runner.hpp"
+
+namespace acst::mpm {
+
+std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history);
+std::string vtp_text(const Simulation& sim);
+std::string pvd_text(const std::string& stem, const std::vector<double>& times);
+
+// Figures: return "" or a warning (gnuplot missing or failed); they never throw.
+std::string write_load_figure(const Scene& scene, const std::string& dir, const std::string& csv_file);
+std::string write_contour_figure(const std::string& dir, const std::string& stem, const std::string& title,
+                                 const std::string& label, double cell, const std::vector<double>& x,
+                                 const std::vector<double>& y, const std::vector<double>& value);
+
+}  // namespace acst::mpm

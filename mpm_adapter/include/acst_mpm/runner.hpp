@@ -1,0 +1,55 @@
+#pragma once
+// Runs a scene to its stop: the step loop, the load record (every step, averaged over each
+// XPIC period), VTK frames, contour figures, checkpoints and the progress line.
+#include <string>
+#include <vector>
+
+#include "acst_mpm/scene.hpp"
+
+namespace acst::mpm {
+
+// One row of the load-settlement record: footing loads averaged over one period of steps.
+// V is the vertical load the footing applies to the soil (positive downward), H the horizontal
+// one (positive toward +x), both per metre out of plane.
+struct LoadRecord {
+  long long step = 0;
+  double time = 0, settlement = 0, S_over_B = 0;
+  double V_kN_per_m = 0, H_kN_per_m = 0, q_kPa = 0;
+  double kinetic_J_per_m = 0, footing_work_J_per_m = 0;
+};
+
+// Particle positions and contour fields kept at the peak load.
+struct Snapshot {
+  double S_over_B = 0, V_kN_per_m = 0;
+  std::vector<double> x, y, shear_strain, displacement;
+};
+
+// Everything besides the simulation that a checkpoint must hold to continue identically.
+struct RunState {
+  std::vector<LoadRecord> history;
+  std::vector<LoadRecord> every_step;  // only with output.every_step_csv
+  double sum_V = 0, sum_H = 0;
+  long long period_steps = 0;
+  int vtk_frames = 0;
+  std::vector<double> vtk_times;       // simulation time of each frame (for the .pvd)
+  std::vector<int> contours_done;      // per requested S/B
+  Snapshot peak;
+};
+
+struct RunOptions {
+  std::string output_dir;
+  bool quiet = false, plot = true;
+  std::string resume_from;  // checkpoint file
+};
+
+struct RunSummary {
+  long long steps = 0;
+  double wall_s = 0, particle_steps_per_s = 0;
+  double Q_ult = 0, S_ult = 0, S_ult_over_B = 0, residual_V = 0;
+  bool peak_reached = false;
+  std::vector<std::string> warnings;
+};
+
+RunSummary run_scene(const Scene& scene, const RunOptions& options);
+
+}  // namespace acst::mpm

@@ -1,0 +1,75 @@
+#pragma once
+// An MPM scene as read from JSON (docs/mpm.md): grid, materials with their parameter files,
+// bodies of soil, initial stress, walls, surcharge, footing, solver, stop and output.
+// Lengths in m, stresses in kPa, density in kg/m^3, angles in degrees, velocity in m/s.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "acst_driver/scene_error.hpp"
+#include "acst_mpm/simulation.hpp"
+
+namespace acst::mpm {
+
+using SceneError = acst::driver::SceneError;
+
+struct MaterialSpec {
+  std::string name;
+  std::string json_text;  // {"model", "parameters", ...} for acst_model_create
+  std::string source;     // the parameter file, or "inline"
+};
+
+// A rectangle of soil filled with particles_per_cell^2 particles per cell.
+struct BodySpec {
+  std::string name, material;
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  double density = 0;
+  int particles_per_cell = 1;
+  std::optional<double> void_ratio, relative_density;  // sand only; relative density as a fraction
+  double bedding_angle_deg = 0;                        // angle of the deposition direction from vertical
+};
+
+struct FootingSpec {
+  double width = 0, centre_x = 0, speed = 0, inclination_deg = 0;
+  bool rough = true;
+};
+
+struct StopSpec {
+  std::optional<double> S_over_B, time;
+  std::optional<long long> steps;
+};
+
+struct OutputSpec {
+  double vtk_every_S_over_B = 0.05;         // also used for time-driven runs via vtk_every_time
+  std::optional<double> vtk_every_time;
+  std::vector<double> contours_at_S_over_B;  // shear-strain and displacement figures
+  bool contours_at_peak = true;
+  std::string lab_curve;                     // CSV with S_over_B and q_kPa columns, overlaid
+  std::string lab_label;
+  double checkpoint_every_s = 120.0;         // wall-clock seconds between checkpoints (0: none)
+  bool every_step_csv = false;
+};
+
+struct Scene {
+  std::string name, file, text;  // text: the canonical JSON, stored in checkpoints
+  double cell_size = 0;
+  int cells_above = 6;           // empty cells kept above the highest body (heave room)
+  std::vector<MaterialSpec> materials;
+  std::vector<BodySpec> bodies;
+  double gravity = 0, K0 = 0.5;
+  bool geostatic = false;        // initial stress from the overburden, sigma_h = K0 sigma_v
+  std::string base = "fixed", sides = "smooth";
+  double surcharge = 0;          // kPa on the top surface outside the footing
+  std::optional<FootingSpec> footing;
+  Settings solver;
+  StopSpec stop;
+  OutputSpec output;
+};
+
+Scene parse_scene(const std::string& json_text, const std::string& file = "");
+Scene read_scene(const std::string& path);
+
+// Builds the grid, walls, particles (initial stress and state through the material ABI).
+Simulation build_simulation(const Scene& scene);
+
+}  // namespace acst::mpm

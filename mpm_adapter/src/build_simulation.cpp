@@ -1,0 +1,131 @@
+// Turns a scene into a ready simulation: grid around the bodies, walls at their extent,
+// particles with their geostatic stress and initial state (through the material ABI).
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "acst_mpm/scene.hpp"
+
+namespace acst::mpm {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// Vertical total stress (kPa, compression positive) at (x, y): surcharge plus the weight of the
+// bodies above in the same column.
+double overburden(const Scene& s, double x, double y) {
+  double sv = s.surcharge;
+  for (const BodySpec& b : s.bodies)
+    if (x >= b.x_min && x <= b.x_max && b.y_max > y)
+      sv += b.density * s.gravity * (b.y_max - std::max(y, b.y_min)) / 1000.0;  // Pa -> kPa
+  return sv;
+}
+
+double column_top(const Scene& s, double x) {
+  double top = -INFINITY;
+  for (const BodySpec& b : s.bodies)
+    if (x >= b.x_min && x <= b.x_max) top = std::max(top, b.y_max);
+  return top;
+}
+
+}  // namespace
+
+Simulation build_simulation(const Scene& s) {
+  const double h = s.cell_size;
+  double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY, y_max = -INFINITY;
+  for (const BodySpec& b : s.bodies) {
+    x_min = std::min(x_min, b.x_min), x_max = std::max(x_max, b.x_max);
+    y_min = std::min(y_min, b.y_min), y_max = std::max(y_max, b.y_max);
+  }
+  constexpr int margin = 3;  // cells beyond the walls: the stencil reaches two
+  Grid grid;
+  grid.h = h;
+  grid.x0 = x_min - margin * h;
+  grid.y0 = y_min - margin * h;
+  grid.nx = static_cast<int>(std::lround((x_max - x_min) / h)) + 2 * margin + 1;
+  grid.ny = static_cast<int>(std::lround((y_max - y_min) / h)) + margin + s.cells_above + 1;
+
+  Walls walls;
+  walls.left = x_min, walls.right = x_max, walls.base = y_min;
+  walls.base_fixed = s.base == "fixed";
+  walls.sides = s.sides == "fixed" ? SideWall::fixed : (s.sides == "none" ? SideWall::none : SideWall::smooth);
+
+  std::vector<std::shared_ptr<const Material>> materials;
+  std::map<std::string, int> index;
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    materials.push_back(std::make_shared<const Material>(s.materials[i].name, s.materials[i].json_text));
+    index[s.materials[i].name] = static_cast<int>(i);
+  }
+  Simulation sim(grid, walls, s.solver, materials);
+  sim.surcharge = s.surcharge;
+  int ppc = s.bodies.front().particles_per_cell;
+  std::size_t count = 0, state_size = 0;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const BodySpec& b = s.bodies[i];
+    if (b.particles_per_cell != ppc)
+      throw SceneError("/bodies/" + std::to_string(i) + "/particles_per_cell: all bodies must use the same number (B2GIMP's uniform particle domains)");
+    const long long cells = std::llround((b.x_max - b.x_min) / h) * std::llround((b.y_max - b.y_min) / h);
+    count += static_cast<std::size_t>(cells) * ppc * ppc;
+    state_size = std::max<std::size_t>(state_size, materials[index[b.material]]->state_size());
+  }
+  sim.particle_half_width = 0.5 / ppc;
+  if (s.footing) {
+    sim.footing.active = true;
+    sim.footing.centre_x = s.footing->centre_x;
+    sim.footing.width = s.footing->width;
+    sim.footing.base_y = column_top(s, s.footing->centre_x);
+    sim.footing.speed = s.footing->speed;
+    sim.footing.inclination = s.footing->inclination_deg * pi / 180.0;
+    sim.footing.rough = s.footing->rough;
+    if (!std::isfinite(sim.footing.base_y)) throw SceneError("/footing/centre_x: no body lies under the footing");
+  }
+
+  Particles& P = sim.particles;
+  P.resize(count, static_cast<int>(state_size));
+  const double d = h / ppc;
+  std::size_t p = 0;
+  for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
+    const BodySpec& b = s.bodies[bi];
+    const std::string path = "/bodies/" + std::to_string(bi);
+    const Material& mat = *materials[index[b.material]];
+    double e = 0.0, deposition[3] = {0.0, 1.0, 0.0};
+    if (mat.is_sand()) {
+      if (!b.void_ratio && !b.relative_density)
+        throw SceneError(path + ": a sand material needs void_ratio or relative_density_pct");
+      e = b.void_ratio ? *b.void_ratio : mat.void_ratio_from_relative_density(*b.relative_density);
+      // b = (-sin alpha, cos alpha, 0): alpha from the vertical (loading) axis, as in the reference study.
+      const acst_status st = acst_bedding_direction(deposition, b.bedding_angle_deg, 1, 0, -1.0);
+      if (st.code != ACST_OK) throw SceneError(path + "/bedding_angle_deg: " + st.message);
+    }
+    const long long ncx = std::llround((b.x_max - b.x_min) / d), ncy = std::llround((b.y_max - b.y_min) / d);
+    for (long long jy = 0; jy < ncy; ++jy)
+      for (long long ix = 0; ix < ncx; ++ix, ++p) {
+        const double x = b.x_min + (ix + 0.5) * d, y = b.y_min + (jy + 0.5) * d;
+        P.x[p] = P.x_initial[p] = x;
+        P.y[p] = P.y_initial[p] = y;
+        P.volume_initial[p] = d * d;
+        P.density[p] = b.density;
+        P.weight_mass[p] = b.density * d * d;
+        P.mass[p] = P.weight_mass[p] * s.solver.mass_scaling;
+        P.material[p] = index[b.material];
+        double* sig = &P.stress[6 * p];
+        if (s.geostatic) {
+          const double sv = overburden(s, x, y);
+          sig[0] = sig[2] = -s.K0 * sv;
+          sig[1] = -sv;
+        }
+        try {
+          mat.initial_state(P.statev.data() + P.state_size * p, sig, e, deposition);
+        } catch (const MaterialError& err) {
+          throw SceneError(path + ": particle at (" + std::to_string(x) + ", " + std::to_string(y) + "): " + err.what());
+        }
+        const bool top_row = y + d > column_top(s, x) - 1e-9 * h;
+        const bool under_footing = s.footing && std::fabs(x - s.footing->centre_x) < 0.5 * s.footing->width;
+        if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = d;
+      }
+  }
+  sim.prepare();
+  return sim;
+}
+
+}  // namespace acst::mpm

@@ -1,0 +1,138 @@
+#include "acst_mpm/checkpoint.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <type_traits>
+
+#include "acst_driver/files.hpp"
+
+namespace acst::mpm {
+namespace {
+
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '1'};
+
+struct Writer {
+  std::string out;
+  template <class T>
+  void pod(const T& v) {
+    static_assert(std::is_trivially_copyable<T>::value, "plain data only");
+    out.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  template <class T>
+  void vec(const std::vector<T>& v) {
+    pod<std::uint64_t>(v.size());
+    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  void str(const std::string& s) {
+    pod<std::uint64_t>(s.size());
+    out += s;
+  }
+};
+
+struct Reader {
+  const std::string& in;
+  std::size_t at = 0;
+  std::string file;
+  void need(std::size_t n) {
+    if (at + n > in.size()) throw SimulationError("checkpoint '" + file + "' is truncated");
+  }
+  template <class T>
+  void pod(T& v) {
+    need(sizeof v);
+    std::memcpy(&v, in.data() + at, sizeof v);
+    at += sizeof v;
+  }
+  template <class T>
+  void vec(std::vector<T>& v) {
+    std::uint64_t n = 0;
+    pod(n);
+    if (n > (in.size() - at) / sizeof(T)) throw SimulationError("checkpoint '" + file + "' is truncated");
+    v.resize(n);
+    std::memcpy(v.data(), in.data() + at, n * sizeof(T));
+    at += n * sizeof(T);
+  }
+  std::string str() {
+    std::uint64_t n = 0;
+    pod(n);
+    need(n);
+    std::string s = in.substr(at, n);
+    at += n;
+    return s;
+  }
+};
+
+// One list of the evolving particle arrays, shared by writer and reader.
+template <class F>
+void particle_arrays(Particles& P, F&& f) {
+  for (auto* v : {&P.x, &P.y, &P.x_initial, &P.y_initial, &P.vx, &P.vy, &P.mass, &P.weight_mass, &P.volume_initial,
+                  &P.density, &P.F, &P.stress, &P.strain, &P.statev, &P.surcharge_length, &P.wave_speed})
+    f(*v);
+  f(P.material);
+}
+
+template <class IO, class Sim, class State>
+void run_fields(IO& io, Sim& sim, State& st) {
+  io.pod(sim.step_count);
+  io.pod(sim.time);
+  io.pod(sim.dt);
+  io.pod(sim.footing_dx);
+  io.pod(sim.footing_dy);
+  io.pod(sim.footing_work);
+  io.vec(st.history);
+  io.vec(st.every_step);
+  io.pod(st.sum_V);
+  io.pod(st.sum_H);
+  io.pod(st.period_steps);
+  io.pod(st.vtk_frames);
+  io.vec(st.vtk_times);
+  io.vec(st.contours_done);
+  io.pod(st.peak.S_over_B);
+  io.pod(st.peak.V_kN_per_m);
+  for (auto* v : {&st.peak.x, &st.peak.y, &st.peak.shear_strain, &st.peak.displacement}) io.vec(*v);
+}
+
+}  // namespace
+
+void write_checkpoint(const std::string& path, const Scene& scene, const Simulation& sim, const RunState& state) {
+  Writer w;
+  w.out.append(magic, sizeof magic);
+  w.str(scene.text);
+  w.pod<std::uint64_t>(sim.particles.n);
+  Simulation& s = const_cast<Simulation&>(sim);  // the writer only reads
+  RunState& st = const_cast<RunState&>(state);
+  particle_arrays(s.particles, [&](auto& v) { w.vec(v); });
+  run_fields(w, s, st);
+  acst::driver::write_file_atomically(path, w.out);
+}
+
+void read_checkpoint(const std::string& path, const Scene& scene, Simulation& sim, RunState& state) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw SimulationError("cannot open checkpoint '" + path + "'");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string data = ss.str();
+  Reader r{data, 0, path};
+  r.need(sizeof magic);
+  if (std::memcmp(data.data(), magic, sizeof magic) != 0) throw SimulationError("'" + path + "' is not an acst_mpm checkpoint");
+  r.at = sizeof magic;
+  if (r.str() != scene.text) throw SimulationError("checkpoint '" + path + "' was written for a different scene");
+  std::uint64_t n = 0;
+  r.pod(n);
+  if (n != sim.particles.n) throw SimulationError("checkpoint '" + path + "' holds a different number of particles");
+  Particles P = sim.particles;
+  particle_arrays(P, [&](auto& v) {
+    const std::size_t expected = v.size();
+    r.vec(v);
+    if (v.size() != expected) throw SimulationError("checkpoint '" + path + "' has an array of the wrong size");
+  });
+  RunState st;
+  Simulation copy = sim;
+  run_fields(r, copy, st);
+  if (r.at != data.size()) throw SimulationError("checkpoint '" + path + "' has trailing data");
+  copy.particles = std::move(P);
+  sim = std::move(copy);
+  state = std::move(st);
+}
+
+}  // namespace acst::mpm

@@ -1,0 +1,41 @@
+#include "acst_mpm/fields.hpp"
+
+#include <cmath>
+
+#include "acst.h"
+
+namespace acst::mpm {
+
+double max_shear_strain(const double* e) { return std::hypot(e[0] - e[1], 2.0 * e[2]); }
+
+ParticleFields particle_fields(const Simulation& sim) {
+  const Particles& P = sim.particles;
+  ParticleFields f;
+  for (auto* v : {&f.p, &f.q, &f.shear_strain, &f.displacement, &f.void_ratio, &f.fabric_norm, &f.A, &f.N})
+    v->assign(P.n, 0.0);
+  std::vector<int> e_index;
+  for (const auto& m : sim.materials) {
+    e_index.push_back(m->state_index("void_ratio"));
+    f.sand = f.sand || m->is_sand();
+  }
+  for (std::size_t i = 0; i < P.n; ++i) {
+    const Material& m = *sim.materials[P.material[i]];
+    const double* s = &P.stress[6 * i];
+    const double* q = P.statev.data() + P.state_size * i;
+    double d[ACST_NDIAGNOSTICS];
+    m.diagnostics(d, s, q);
+    f.p[i] = d[0];
+    f.q[i] = d[1];
+    f.shear_strain[i] = max_shear_strain(&P.strain[3 * i]);
+    f.displacement[i] = std::hypot(P.x[i] - P.x_initial[i], P.y[i] - P.y_initial[i]);
+    if (m.is_sand()) {
+      f.void_ratio[i] = e_index[P.material[i]] >= 0 ? q[e_index[P.material[i]]] : 0.0;
+      f.A[i] = d[6];
+      f.fabric_norm[i] = d[7];
+      f.N[i] = d[7] > 0.0 ? d[6] / d[7] : 0.0;  // relative fabric-loading orientation
+    }
+  }
+  return f;
+}
+
+}  // namespace acst::mpm

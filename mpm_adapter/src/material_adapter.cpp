@@ -1,0 +1,98 @@
+#include "acst_mpm/material_adapter.hpp"
+
+#include <cmath>
+#include <cstring>
+
+namespace acst::mpm {
+namespace {
+
+acst_model* create(const std::string& name, const std::string& json_text) {
+  acst_model* m = nullptr;
+  const acst_status st = acst_model_create(&m, json_text.c_str());
+  if (st.code != ACST_OK) throw MaterialError("material '" + name + "': " + st.message);
+  return m;
+}
+
+void check(const acst_status& st, const std::string& what) {
+  if (st.code != ACST_OK) throw MaterialError(what + ": " + st.message);
+}
+
+}  // namespace
+
+Material::Material(const std::string& name, const std::string& json_text)
+    : name_(name), model_(create(name, json_text), acst_model_destroy) {
+  state_size_ = acst_state_size(model_.get());
+  if (state_size_ < 0 || state_size_ > max_state_size)
+    throw MaterialError("material '" + name + "': unsupported number of state variables");
+}
+
+std::string Material::kind() const {
+  const char* k = acst_model_kind(model_.get());
+  return k ? k : "";
+}
+
+bool Material::is_sand() const {
+  const std::string k = kind();
+  return k == "ACST" || k == "isotropic";
+}
+
+std::vector<std::string> Material::state_names() const {
+  std::vector<std::string> names;
+  for (int i = 0; i < state_size_; ++i) names.emplace_back(acst_state_name(model_.get(), i));
+  return names;
+}
+
+void Material::initial_state(double* statev, double* stress, double void_ratio, const double* deposition) const {
+  check(acst_initial_state(statev, stress, model_.get(), stress, void_ratio, deposition),
+        "material '" + name_ + "': initial state");
+}
+
+double Material::void_ratio_from_relative_density(double Dr) const {
+  double e = 0.0;
+  check(acst_void_ratio_from_relative_density(&e, model_.get(), Dr), "material '" + name_ + "'");
+  return e;
+}
+
+double Material::wave_speed(const double* stress, const double* statev, double density) const {
+  double c = 0.0;
+  check(acst_wave_speed(&c, model_.get(), stress, statev, density), "material '" + name_ + "': wave speed");
+  return c;
+}
+
+void Material::diagnostics(double* out, const double* stress, const double* statev) const {
+  check(acst_diagnostics(out, model_.get(), stress, statev), "material '" + name_ + "': diagnostics");
+}
+
+int Material::state_index(const std::string& name) const {
+  for (int i = 0; i < state_size_; ++i)
+    if (name == acst_state_name(model_.get(), i)) return i;
+  return -1;
+}
+
+acst_status Material::update(double* stress, double* statev, const double* L, double dt) const {
+  // Hughes-Winget rotation Q = (I - W/2)^-1 (I + W/2) of the spin W = skew(L) dt (in-plane).
+  const double w = 0.5 * (L[1] - L[2]) * dt, d = 1.0 + 0.25 * w * w;
+  const double c = (1.0 - 0.25 * w * w) / d, s = w / d;
+  const double Q[9] = {c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0};
+  acst_status st = acst_rotate_state(stress, statev, model_.get(), Q);
+  if (st.code != ACST_OK) return st;
+  // Plane strain: eps_zz = 0; ABI strain is tension positive with engineering shear.
+  const double de[6] = {L[0] * dt, L[3] * dt, 0.0, (L[1] + L[2]) * dt, 0.0, 0.0};
+  st = acst_update(stress, statev, nullptr, nullptr, model_.get(), de);
+  for (int parts = 2; st.code == ACST_STEP_REDUCTION && parts <= 64; parts *= 2) {
+    double part[6];
+    for (int k = 0; k < 6; ++k) part[k] = de[k] / parts;
+    double s_try[6], q_try[max_state_size];
+    std::memcpy(s_try, stress, sizeof s_try);
+    std::memcpy(q_try, statev, sizeof(double) * static_cast<size_t>(state_size_));
+    for (int k = 0; k < parts && (k == 0 || st.code == ACST_OK); ++k)
+      st = acst_update(s_try, q_try, nullptr, nullptr, model_.get(), part);
+    if (st.code == ACST_OK) {
+      std::memcpy(stress, s_try, sizeof s_try);
+      std::memcpy(statev, q_try, sizeof(double) * static_cast<size_t>(state_size_));
+    }
+  }
+  return st;
+}
+
+}  // namespace acst::mpm

@@ -1,0 +1,153 @@
+#include "acst_mpm/output.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "acst_driver/files.hpp"
+#include "acst_mpm/fields.hpp"
+
+namespace acst::mpm {
+namespace fs = std::filesystem;
+using acst::driver::gp_quoted;
+
+namespace {
+
+void put(std::string& out, double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  out += buf;
+}
+
+void scalar_array(std::string& out, const char* name, const std::vector<double>& v) {
+  out += "<DataArray type=\"Float64\" Name=\"";
+  out += name;
+  out += "\" format=\"ascii\">\n";
+  for (double x : v) put(out, x), out += ' ';
+  out += "\n</DataArray>\n";
+}
+
+}  // namespace
+
+std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history) {
+  std::string out = "# acst_mpm load-settlement record of scene '" + scene.name + "'\n";
+  out += "# loads per metre out of plane, averaged over each period of " + std::to_string(scene.solver.xpic_every) +
+         " steps (one row per step with every_step_csv); V: vertical load of the footing on the soil (positive "
+         "downward), H: horizontal (positive toward +x), q = V/B; S: settlement of the footing (positive downward)\n";
+  out += "step,time_s,S_m,S_over_B,V_kN_per_m,H_kN_per_m,q_kPa,kinetic_J_per_m,footing_work_J_per_m,kinetic_over_work\n";
+  for (const LoadRecord& r : history) {
+    out += std::to_string(r.step) + ',';
+    for (double v : {r.time, r.settlement, r.S_over_B, r.V_kN_per_m, r.H_kN_per_m, r.q_kPa, r.kinetic_J_per_m,
+                     r.footing_work_J_per_m})
+      put(out, v), out += ',';
+    put(out, r.footing_work_J_per_m > 0.0 ? r.kinetic_J_per_m / r.footing_work_J_per_m : 0.0);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string vtp_text(const Simulation& sim) {
+  const Particles& P = sim.particles;
+  const ParticleFields f = particle_fields(sim);
+  std::string out;
+  out.reserve(P.n * 400);
+  out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n";
+  out += "<Piece NumberOfPoints=\"" + std::to_string(P.n) + "\" NumberOfVerts=\"" + std::to_string(P.n) +
+         "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
+  out += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i) put(out, P.x[i]), out += ' ', put(out, P.y[i]), out += " 0 ";
+  out += "\n</DataArray>\n</Points>\n<Verts>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i) out += std::to_string(i) + ' ';
+  out += "\n</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i) out += std::to_string(i + 1) + ' ';
+  out += "\n</DataArray>\n</Verts>\n<PointData Scalars=\"shear_strain\">\n";
+  // ParaView's symmetric-tensor order: XX YY ZZ XY YZ XZ (ours: xx yy zz xy xz yz), kPa, tension positive.
+  out += "<DataArray type=\"Float64\" Name=\"stress_kPa\" NumberOfComponents=\"6\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i)
+    for (int k : {0, 1, 2, 3, 5, 4}) put(out, P.stress[6 * i + k]), out += ' ';
+  out += "\n</DataArray>\n<DataArray type=\"Float64\" Name=\"displacement_m\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i)
+    put(out, P.x[i] - P.x_initial[i]), out += ' ', put(out, P.y[i] - P.y_initial[i]), out += " 0 ";
+  out += "\n</DataArray>\n<DataArray type=\"Float64\" Name=\"velocity_m_per_s\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i) put(out, P.vx[i]), out += ' ', put(out, P.vy[i]), out += " 0 ";
+  out += "\n</DataArray>\n";
+  scalar_array(out, "p_kPa", f.p);
+  scalar_array(out, "q_kPa", f.q);
+  scalar_array(out, "shear_strain", f.shear_strain);
+  scalar_array(out, "displacement_magnitude_m", f.displacement);
+  if (f.sand) {
+    scalar_array(out, "void_ratio", f.void_ratio);
+    scalar_array(out, "fabric_norm", f.fabric_norm);
+    scalar_array(out, "A", f.A);
+    scalar_array(out, "N", f.N);
+  }
+  out += "<DataArray type=\"Int32\" Name=\"material\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < P.n; ++i) out += std::to_string(P.material[i]) + ' ';
+  out += "\n</DataArray>\n</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  return out;
+}
+
+std::string pvd_text(const std::string& stem, const std::vector<double>& times) {
+  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "<DataSet timestep=\"%.10g\" part=\"0\" file=\"%s_%04zu.vtp\"/>\n", times[k],
+                  stem.c_str(), k);
+    out += buf;
+  }
+  return out + "</Collection>\n</VTKFile>\n";
+}
+
+std::string write_load_figure(const Scene& scene, const std::string& dir, const std::string& csv_file) {
+  std::ostringstream gp;
+  gp << "# gnuplot script written by acst_mpm for scene " << scene.name << "\n"
+     << "set terminal pngcairo size 1100,800 font 'DejaVu Sans,12' noenhanced\n"
+     << "if (!exists('png')) png = 'load_settlement.png'\nset output png\n"
+     << "set datafile separator ','\nset datafile commentschars '#'\nset datafile columnheaders\n"
+     << "set xlabel 'S/B'\nset ylabel 'q = V/B [kPa]'\nset grid\nset key top right\n"
+     << "set title " << gp_quoted("Strip footing: " + scene.name) << "\n"
+     << "plot " << gp_quoted(fs::absolute(fs::path(dir) / csv_file).string()) << " using 'S_over_B':'q_kPa' with lines lw 2 lc rgb '#1f3f9f' title 'MPM (ACST C ABI)'";
+  if (!scene.output.lab_curve.empty())
+    gp << ", " << gp_quoted(fs::absolute(scene.output.lab_curve).string())
+       << " using 'S_over_B':'q_kPa' with points pt 7 ps 0.5 lc rgb '#c03020' title "
+       << gp_quoted(scene.output.lab_label.empty() ? "lab data" : scene.output.lab_label);
+  gp << "\n";
+  return acst::driver::run_gnuplot(gp.str(), (fs::path(dir) / "load_settlement.gp").string(),
+                                   (fs::path(dir) / "load_settlement.png").string());
+}
+
+std::string write_contour_figure(const std::string& dir, const std::string& stem, const std::string& title,
+                                 const std::string& label, double cell, const std::vector<double>& x,
+                                 const std::vector<double>& y, const std::vector<double>& value) {
+  std::string data = "x_m,y_m,value\n";
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    put(data, x[i]), data += ',', put(data, y[i]), data += ',', put(data, value[i]);
+    data += '\n';
+  }
+  const std::string csv = (fs::path(dir) / (stem + ".csv")).string();
+  try {
+    acst::driver::write_file_atomically(csv, data);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  double cap = 0.0;  // colour range to the 99th percentile so a few extreme particles don't wash it out
+  if (!value.empty()) {
+    std::vector<double> v(value);
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(0.99 * (v.size() - 1)), v.end());
+    cap = v[static_cast<std::size_t>(0.99 * (v.size() - 1))];
+  }
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1400,800 font 'DejaVu Sans,12' noenhanced\n"
+     << "if (!exists('png')) png = " << gp_quoted(stem + ".png") << "\nset output png\n"
+     << "set datafile separator ','\nset datafile columnheaders\nset size ratio -1\n"
+     << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset cblabel " << gp_quoted(label) << "\n"
+     << "set title " << gp_quoted(title) << "\nset palette rgb 33,13,10\n";
+  if (cap > 0.0) gp << "set cbrange [0:" << cap << "]\n";
+  gp << "d = " << 0.5 * cell << "\nplot " << gp_quoted(fs::absolute(csv).string())
+     << " using 1:2:($1-d):($1+d):($2-d):($2+d):3 with boxxyerror fs solid noborder fc palette notitle\n";
+  return acst::driver::run_gnuplot(gp.str(), (fs::path(dir) / (stem + ".gp")).string(),
+                                   (fs::path(dir) / (stem + ".png")).string());
+}
+
+}  // namespace acst::mpm

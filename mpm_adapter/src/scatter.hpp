@@ -1,0 +1,77 @@
+#pragma once
+// Deterministic parallel loops over particles. Particles are split into static chunks, one
+// per thread; a particle-to-grid scatter adds into the thread's own copy of the nodal fields,
+// and the copies are summed in thread order, so results depend on the thread count only.
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace acst::mpm {
+
+inline int thread_count(int requested) {
+#ifdef _OPENMP
+  return requested > 0 ? requested : omp_get_max_threads();
+#else
+  (void)requested;
+  return 1;
+#endif
+}
+
+// f(thread, index) for index in [0, n), static chunks.
+template <class F>
+void parallel_for(int threads, std::size_t n, F&& f) {
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) f(t, i);
+  }
+#else
+  (void)threads;
+  for (std::size_t i = 0; i < n; ++i) f(0, i);
+#endif
+}
+
+class Scatter {
+ public:
+  void configure(int requested_threads, std::size_t nodes) {
+    threads_ = thread_count(requested_threads);
+    nodes_ = nodes;
+  }
+  int threads() const { return threads_; }
+
+  // body(p, fields) adds particle p's contributions to fields[0..k); out[k] receives the sums.
+  template <class Body>
+  void run(int k, double* const* out, std::size_t n, Body&& body) {
+    buffer_.resize(static_cast<std::size_t>(threads_) * k * nodes_);
+    parallel_for(threads_, static_cast<std::size_t>(threads_), [&](int, std::size_t t) {
+      double* f[max_fields];
+      for (int c = 0; c < k; ++c) {
+        f[c] = field(t, c, k);
+        std::fill(f[c], f[c] + nodes_, 0.0);
+      }
+      const std::size_t begin = n * t / threads_, end = n * (t + 1) / threads_;
+      for (std::size_t p = begin; p < end; ++p) body(p, f);
+    });
+    parallel_for(threads_, nodes_, [&](int, std::size_t i) {
+      for (int c = 0; c < k; ++c) {
+        double s = 0.0;
+        for (int t = 0; t < threads_; ++t) s += field(t, c, k)[i];
+        out[c][i] = s;
+      }
+    });
+  }
+  static constexpr int max_fields = 4;
+
+ private:
+  double* field(std::size_t t, int c, int k) { return buffer_.data() + (t * k + c) * nodes_; }
+  int threads_ = 1;
+  std::size_t nodes_ = 0;
+  std::vector<double> buffer_;
+};
+
+}  // namespace acst::mpm

@@ -1,0 +1,244 @@
+// Reads and validates an MPM scene; every error names the JSON path and the allowed values.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "acst_driver/json_fields.hpp"
+#include "acst_mpm/scene.hpp"
+
+namespace acst::mpm {
+namespace f = acst::driver::fields;
+using nlohmann::json;
+
+namespace {
+
+std::string resolve(const std::string& base_dir, const std::string& name) {
+  const std::filesystem::path p(name);
+  return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
+}
+
+std::string read_text(const std::string& file, const std::string& path) {
+  std::ifstream in(file);
+  if (!in) f::fail(path, "cannot open '" + file + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+json parse(const std::string& text, const std::string& path) {
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    f::fail(path, std::string("invalid JSON: ") + e.what());
+  }
+}
+
+void read_materials(const json& j, const std::string& path, const std::string& dir, Scene& s) {
+  f::object(j, path);
+  if (j.empty()) f::fail(path, "at least one material is required");
+  for (const auto& item : j.items()) {
+    const std::string p = path + "/" + item.key();
+    MaterialSpec m;
+    m.name = item.key();
+    if (item.value().is_string()) {
+      const std::string file = resolve(dir, item.value().get<std::string>());
+      m.json_text = read_text(file, p);
+      m.source = file;
+    } else {
+      f::allow_keys(item.value(), {"model", "parameters", "integrator"}, p);
+      m.json_text = item.value().dump();
+      m.source = "inline";
+    }
+    try {
+      Material check(m.name, m.json_text);
+    } catch (const MaterialError& e) {
+      f::fail(p, e.what());
+    }
+    s.materials.push_back(m);
+  }
+}
+
+BodySpec read_body(const json& j, const std::string& p, const Scene& s) {
+  f::allow_keys(j, {"name", "material", "x_range", "y_range", "density", "particles_per_cell", "void_ratio",
+                    "relative_density_pct", "bedding_angle_deg"},
+                p);
+  BodySpec b;
+  b.name = j.contains("name") ? f::string(j["name"], p + "/name") : "body";
+  if (!j.contains("material")) f::fail(p, "'material' (a name from /materials) is required");
+  b.material = f::string(j["material"], p + "/material");
+  bool known = false;
+  for (const auto& m : s.materials) known = known || m.name == b.material;
+  if (!known) f::fail(p + "/material", "'" + b.material + "' is not defined in /materials");
+  for (const char* k : {"x_range", "y_range", "density"})
+    if (!j.contains(k)) f::fail(p, std::string("'") + k + "' is required");
+  const auto xr = f::numbers(j["x_range"], p + "/x_range", 2, "x_min, x_max in m");
+  const auto yr = f::numbers(j["y_range"], p + "/y_range", 2, "y_min, y_max in m");
+  if (!(xr[1] > xr[0])) f::fail(p + "/x_range", "x_max must exceed x_min");
+  if (!(yr[1] > yr[0])) f::fail(p + "/y_range", "y_max must exceed y_min");
+  b.x_min = xr[0], b.x_max = xr[1], b.y_min = yr[0], b.y_max = yr[1];
+  b.density = f::number(j["density"], p + "/density", {1.0, 1e5}, "kg/m^3");
+  if (j.contains("particles_per_cell"))
+    b.particles_per_cell = static_cast<int>(f::integer(j["particles_per_cell"], p + "/particles_per_cell", 1, 4));
+  const std::string e = f::one_of(j, {"void_ratio", "relative_density_pct"}, p, false);
+  if (e == "void_ratio") b.void_ratio = f::number(j["void_ratio"], p + "/void_ratio", f::positive());
+  if (e == "relative_density_pct")
+    b.relative_density = f::number(j["relative_density_pct"], p + "/relative_density_pct", {0.0, 100.0}, "%") / 100.0;
+  if (j.contains("bedding_angle_deg"))
+    b.bedding_angle_deg = f::number(j["bedding_angle_deg"], p + "/bedding_angle_deg", {-180.0, 180.0}, "deg");
+  return b;
+}
+
+Settings read_solver(const json& j, const std::string& p) {
+  f::allow_keys(j, {"cfl", "particle_update", "xpic_order", "xpic_every", "grid_damping", "particle_damping",
+                    "wave_speed_every", "mass_scaling", "threads"},
+                p);
+  Settings s;
+  if (j.contains("cfl")) s.cfl = f::number(j["cfl"], p + "/cfl", {0.0, 1.0, true, false});
+  if (j.contains("particle_update")) {
+    const std::string u = f::string(j["particle_update"], p + "/particle_update");
+    if (u == "FLIP") s.update = ParticleUpdate::FLIP;
+    else if (u == "PIC") s.update = ParticleUpdate::PIC;
+    else if (u == "XPIC") s.update = ParticleUpdate::XPIC;
+    else f::fail(p + "/particle_update", "'" + u + "' is not one of FLIP, PIC, XPIC");
+  }
+  if (j.contains("xpic_order")) s.xpic_order = static_cast<int>(f::integer(j["xpic_order"], p + "/xpic_order", 1, 16));
+  if (j.contains("xpic_every")) s.xpic_every = static_cast<int>(f::integer(j["xpic_every"], p + "/xpic_every", 1, 100000));
+  if (j.contains("grid_damping")) s.grid_damping = f::number(j["grid_damping"], p + "/grid_damping", {0.0, 1e4}, "1/s");
+  if (j.contains("particle_damping"))
+    s.particle_damping = f::number(j["particle_damping"], p + "/particle_damping", {0.0, 1e4}, "1/s");
+  if (j.contains("wave_speed_every"))
+    s.wave_speed_every = static_cast<int>(f::integer(j["wave_speed_every"], p + "/wave_speed_every", 1, 100000));
+  if (j.contains("mass_scaling")) s.mass_scaling = f::number(j["mass_scaling"], p + "/mass_scaling", {1.0, 1e6});
+  if (j.contains("threads")) s.threads = static_cast<int>(f::integer(j["threads"], p + "/threads", 0, 1024));
+  return s;
+}
+
+FootingSpec read_footing(const json& j, const std::string& p) {
+  f::allow_keys(j, {"width", "centre_x", "speed", "inclination_deg", "interface"}, p);
+  FootingSpec fs;
+  for (const char* k : {"width", "centre_x", "speed"})
+    if (!j.contains(k)) f::fail(p, std::string("'") + k + "' is required");
+  fs.width = f::number(j["width"], p + "/width", f::positive(), "m");
+  fs.centre_x = f::number(j["centre_x"], p + "/centre_x", f::any(), "m");
+  fs.speed = f::number(j["speed"], p + "/speed", f::positive(), "m/s");
+  if (j.contains("inclination_deg"))
+    fs.inclination_deg = f::number(j["inclination_deg"], p + "/inclination_deg", {-80.0, 80.0}, "deg");
+  if (j.contains("interface")) {
+    const std::string i = f::string(j["interface"], p + "/interface");
+    if (i != "rough" && i != "smooth") f::fail(p + "/interface", "'" + i + "' is not one of rough, smooth");
+    fs.rough = i == "rough";
+  }
+  return fs;
+}
+
+OutputSpec read_output(const json& j, const std::string& p, const std::string& dir) {
+  f::allow_keys(j, {"vtk_every_S_over_B", "vtk_every_time", "contours_at_S_over_B", "contours_at_peak", "lab_curve",
+                    "lab_label", "checkpoint_every_s", "every_step_csv"},
+                p);
+  OutputSpec o;
+  if (j.contains("vtk_every_S_over_B"))
+    o.vtk_every_S_over_B = f::number(j["vtk_every_S_over_B"], p + "/vtk_every_S_over_B", {0.0, 10.0});
+  if (j.contains("vtk_every_time")) o.vtk_every_time = f::number(j["vtk_every_time"], p + "/vtk_every_time", f::positive(), "s");
+  if (j.contains("contours_at_S_over_B")) {
+    const json& c = j["contours_at_S_over_B"];
+    if (!c.is_array()) f::fail(p + "/contours_at_S_over_B", "expected an array of S/B values");
+    for (std::size_t i = 0; i < c.size(); ++i)
+      o.contours_at_S_over_B.push_back(
+          f::number(c[i], p + "/contours_at_S_over_B/" + std::to_string(i), {0.0, 10.0, true, false}));
+  }
+  if (j.contains("contours_at_peak")) o.contours_at_peak = f::boolean(j["contours_at_peak"], p + "/contours_at_peak");
+  if (j.contains("lab_curve")) {
+    o.lab_curve = resolve(dir, f::string(j["lab_curve"], p + "/lab_curve"));
+    if (!std::ifstream(o.lab_curve)) f::fail(p + "/lab_curve", "cannot open '" + o.lab_curve + "'");
+  }
+  if (j.contains("lab_label")) o.lab_label = f::string(j["lab_label"], p + "/lab_label");
+  if (j.contains("checkpoint_every_s"))
+    o.checkpoint_every_s = f::number(j["checkpoint_every_s"], p + "/checkpoint_every_s", {0.0, 1e6}, "s");
+  if (j.contains("every_step_csv")) o.every_step_csv = f::boolean(j["every_step_csv"], p + "/every_step_csv");
+  return o;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& file) {
+  const json j = parse(json_text, "");
+  f::allow_keys(j, {"name", "description", "grid", "materials", "bodies", "initial_stress", "gravity", "walls",
+                    "surcharge_kPa", "footing", "solver", "stop", "output"},
+                "");
+  const std::string dir = file.empty() ? "" : std::filesystem::path(file).parent_path().string();
+  Scene s;
+  s.file = file;
+  s.text = j.dump();
+  s.name = j.contains("name") ? f::string(j["name"], "/name") : std::filesystem::path(file).stem().string();
+  if (s.name.empty() || s.name.find('/') != std::string::npos) f::fail("/name", "a non-empty name without '/' is required");
+  for (const char* k : {"grid", "materials", "bodies", "stop"})
+    if (!j.contains(k)) f::fail("", std::string("'") + k + "' is required");
+
+  f::allow_keys(j["grid"], {"cell_size", "cells_above"}, "/grid");
+  if (!j["grid"].contains("cell_size")) f::fail("/grid", "'cell_size' is required");
+  s.cell_size = f::number(j["grid"]["cell_size"], "/grid/cell_size", f::positive(), "m");
+  if (j["grid"].contains("cells_above"))
+    s.cells_above = static_cast<int>(f::integer(j["grid"]["cells_above"], "/grid/cells_above", 2, 1000));
+
+  read_materials(j["materials"], "/materials", dir, s);
+  if (!j["bodies"].is_array() || j["bodies"].empty()) f::fail("/bodies", "expected a non-empty array of bodies");
+  for (std::size_t i = 0; i < j["bodies"].size(); ++i)
+    s.bodies.push_back(read_body(j["bodies"][i], "/bodies/" + std::to_string(i), s));
+
+  if (j.contains("gravity")) s.gravity = f::number(j["gravity"], "/gravity", {0.0, 1000.0}, "m/s^2");
+  if (j.contains("initial_stress")) {
+    const json& is = j["initial_stress"];
+    f::allow_keys(is, {"type", "K0"}, "/initial_stress");
+    const std::string type = is.contains("type") ? f::string(is["type"], "/initial_stress/type") : "geostatic";
+    if (type != "geostatic" && type != "zero") f::fail("/initial_stress/type", "'" + type + "' is not one of geostatic, zero");
+    s.geostatic = type == "geostatic";
+    if (is.contains("K0")) s.K0 = f::number(is["K0"], "/initial_stress/K0", {0.0, 5.0, true, false});
+  }
+  if (j.contains("walls")) {
+    f::allow_keys(j["walls"], {"base", "sides"}, "/walls");
+    if (j["walls"].contains("base")) s.base = f::string(j["walls"]["base"], "/walls/base");
+    if (j["walls"].contains("sides")) s.sides = f::string(j["walls"]["sides"], "/walls/sides");
+    if (s.base != "fixed" && s.base != "none") f::fail("/walls/base", "'" + s.base + "' is not one of fixed, none");
+    if (s.sides != "smooth" && s.sides != "fixed" && s.sides != "none")
+      f::fail("/walls/sides", "'" + s.sides + "' is not one of smooth, fixed, none");
+  }
+  if (j.contains("surcharge_kPa")) s.surcharge = f::number(j["surcharge_kPa"], "/surcharge_kPa", {0.0, 1e5}, "kPa");
+  if (j.contains("footing")) s.footing = read_footing(j["footing"], "/footing");
+  if (j.contains("solver")) s.solver = read_solver(j["solver"], "/solver");
+  s.solver.gravity = s.gravity;
+
+  f::allow_keys(j["stop"], {"S_over_B", "time", "steps"}, "/stop");
+  const std::string stop = f::one_of(j["stop"], {"S_over_B", "time", "steps"}, "/stop");
+  if (stop == "S_over_B") {
+    if (!s.footing) f::fail("/stop/S_over_B", "needs a /footing");
+    s.stop.S_over_B = f::number(j["stop"]["S_over_B"], "/stop/S_over_B", {0.0, 5.0, true, false});
+  }
+  if (stop == "time") s.stop.time = f::number(j["stop"]["time"], "/stop/time", f::positive(), "s");
+  if (stop == "steps") s.stop.steps = f::integer(j["stop"]["steps"], "/stop/steps", 1, 2000000000LL);
+  if (j.contains("output")) s.output = read_output(j["output"], "/output", dir);
+
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const BodySpec& b = s.bodies[i];
+    const std::string p = "/bodies/" + std::to_string(i);
+    for (double v : {b.x_min, b.x_max, b.y_min, b.y_max}) {
+      const double cells = v / s.cell_size;
+      if (std::fabs(cells - std::round(cells)) > 1e-6)
+        f::fail(p, "the body's edges must lie on grid lines (multiples of /grid/cell_size = " + f::shown(s.cell_size) + " m)");
+    }
+  }
+  return s;
+}
+
+Scene read_scene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return parse_scene(ss.str(), path);
+  } catch (const SceneError& e) {
+    throw SceneError(path + ": " + e.what());
+  }
+}
+
+}  // namespace acst::mpm

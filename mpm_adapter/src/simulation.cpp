@@ -1,0 +1,445 @@
+#include "acst_mpm/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "acst_mpm/shape_functions.hpp"
+#include "scatter.hpp"
+
+namespace acst::mpm {
+namespace {
+
+constexpr double kilo = 1000.0;  // kPa * m -> N/m: the one unit conversion of the core
+constexpr int free_node = -1;
+
+}  // namespace
+
+void Particles::resize(std::size_t count, int nstate) {
+  n = count;
+  state_size = nstate;
+  for (auto* v : {&x, &y, &x_initial, &y_initial, &vx, &vy, &mass, &weight_mass, &volume_initial, &density,
+                  &surcharge_length, &wave_speed})
+    v->assign(n, 0.0);
+  F.assign(4 * n, 0.0);
+  for (std::size_t p = 0; p < n; ++p) F[4 * p] = F[4 * p + 3] = 1.0;
+  stress.assign(6 * n, 0.0);
+  strain.assign(3 * n, 0.0);
+  statev.assign(static_cast<std::size_t>(nstate) * n, 0.0);
+  material.assign(n, 0);
+}
+
+double Particles::volume(std::size_t p) const {
+  const double* f = &F[4 * p];
+  return volume_initial[p] * (f[0] * f[3] - f[1] * f[2]);
+}
+
+struct Simulation::Work {
+  Scatter scatter;
+  // Shape-function cache of every particle: first node and 4 weights/slopes per axis.
+  std::vector<int> first_i, first_j;
+  std::vector<double> wx, wy, dwx, dwy;
+  // Nodal fields: mass, lumped velocity v_L, force, acceleration, a second velocity field.
+  std::vector<double> mass, vx, vy, fx, fy, ax, ay, ux, uy, xpx, xpy;
+  // Constraints per node and component: the reaction set (or free_node) and the velocity.
+  std::vector<int> set_x, set_y;
+  std::vector<double> fix_vx, fix_vy;
+  // The body's own mass and force before the walls' mirror images are folded in.
+  std::vector<double> mass_body, fx_body, fy_body;
+  // Per-particle scratch: velocities mapped from the grid.
+  std::vector<double> pvx, pvy;
+  int nx = 0;
+
+  // f(node, S, dS/dx, dS/dy) over particle p's 4 x 4 stencil.
+  template <class F>
+  void stencil(std::size_t p, F&& f) const {
+    const int fi = first_i[p], fj = first_j[p];
+    for (int b = 0; b < 4; ++b) {
+      const double wyb = wy[4 * p + b], dwyb = dwy[4 * p + b];
+      const std::size_t row = static_cast<std::size_t>(fj + b) * nx + fi;
+      for (int a = 0; a < 4; ++a) f(row + a, wx[4 * p + a] * wyb, dwx[4 * p + a] * wyb, wx[4 * p + a] * dwyb);
+    }
+  }
+};
+
+Simulation::Simulation(Grid g, Walls w, Settings s, std::vector<std::shared_ptr<const Material>> mats)
+    : grid(g), walls(w), settings(s), materials(std::move(mats)), work_(std::make_shared<Work>()) {}
+
+bool Simulation::is_xpic_step(long long step) const {
+  if (settings.update == ParticleUpdate::PIC) return true;
+  if (settings.update == ParticleUpdate::FLIP) return false;
+  return (step + 1) % settings.xpic_every == 0;
+}
+
+void Simulation::prepare() {
+  Work& w = *work_;
+  const std::size_t N = grid.nodes(), n = particles.n;
+  for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
+  w.set_x.assign(N, free_node);
+  w.set_y.assign(N, free_node);
+  w.fix_vx.assign(N, 0.0);
+  w.fix_vy.assign(N, 0.0);
+  w.first_i.assign(n, 0);
+  w.first_j.assign(n, 0);
+  for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
+  w.pvx.assign(n, 0.0);
+  w.pvy.assign(n, 0.0);
+  w.nx = grid.nx;
+  w.scatter.configure(settings.threads, N);
+  if (step_count == 0 || particles.wave_speed.empty() ||
+      std::all_of(particles.wave_speed.begin(), particles.wave_speed.end(), [](double c) { return c == 0.0; }))
+    refresh_wave_speeds();
+}
+
+void Simulation::refresh_wave_speeds() {
+  Particles& P = particles;
+  const std::size_t n = P.n;
+  std::vector<std::string> errors(work_->scatter.threads());
+  parallel_for(work_->scatter.threads(), n, [&](int t, std::size_t p) {
+    try {
+      const double J = P.volume(p) / P.volume_initial[p];
+      P.wave_speed[p] = materials[P.material[p]]->wave_speed(&P.stress[6 * p],
+                                                             P.statev.data() + P.state_size * p, P.density[p] / J);
+    } catch (const std::exception& e) {
+      if (errors[t].empty()) errors[t] = "particle " + std::to_string(p) + ": " + e.what();
+    }
+  });
+  for (const auto& e : errors)
+    if (!e.empty()) throw SimulationError("step " + std::to_string(step_count) + ", " + e);
+}
+
+double Simulation::stable_time_step() const {
+  const Particles& P = particles;
+  const double scale = 1.0 / std::sqrt(settings.mass_scaling);
+  double fastest = 0.0;
+  for (std::size_t p = 0; p < P.n; ++p)
+    fastest = std::max(fastest, P.wave_speed[p] * scale + std::hypot(P.vx[p], P.vy[p]));
+  if (!(fastest > 0.0) || !std::isfinite(fastest))
+    throw SimulationError("step " + std::to_string(step_count) + ": no finite wave speed for the time step");
+  return settings.cfl * grid.h / fastest;
+}
+
+double Simulation::kinetic_energy() const {
+  double k = 0.0;
+  for (std::size_t p = 0; p < particles.n; ++p)
+    k += 0.5 * particles.mass[p] * (particles.vx[p] * particles.vx[p] + particles.vy[p] * particles.vy[p]);
+  return k;
+}
+
+void Simulation::fail(std::size_t p, const std::string& what) const {
+  char where[96];
+  std::snprintf(where, sizeof where, "step %lld, particle %zu at (%.4g, %.4g) m: ", step_count, p, particles.x[p],
+                particles.y[p]);
+  throw SimulationError(where + what);
+}
+
+void Simulation::compute_shape_functions() {
+  Work& w = *work_;
+  Particles& P = particles;
+  const double h = grid.h, l = particle_half_width;
+  std::vector<long long> off_grid(w.scatter.threads(), -1);
+  parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
+    const AxisWeights ax = axis_weights((P.x[p] - grid.x0) / h, l), ay = axis_weights((P.y[p] - grid.y0) / h, l);
+    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid.nx ||
+        ay.first + 3 >= grid.ny) {
+      if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
+      return;
+    }
+    w.first_i[p] = ax.first;
+    w.first_j[p] = ay.first;
+    for (int k = 0; k < 4; ++k) {
+      w.wx[4 * p + k] = ax.w[k];
+      w.dwx[4 * p + k] = ax.dw[k] / h;
+      w.wy[4 * p + k] = ay.w[k];
+      w.dwy[4 * p + k] = ay.dw[k] / h;
+    }
+  });
+  for (long long p : off_grid)
+    if (p >= 0) fail(static_cast<std::size_t>(p), "left the grid (the grid must reach two cells past every particle)");
+}
+
+void Simulation::update_constraints() {
+  Work& w = *work_;
+  const double h = grid.h, tol = 1e-9 * h;
+  std::fill(w.set_x.begin(), w.set_x.end(), free_node);
+  std::fill(w.set_y.begin(), w.set_y.end(), free_node);
+  if (!footing.active) return;
+  const double vfx = footing.speed * std::sin(footing.inclination), vfy = -footing.speed * std::cos(footing.inclination);
+  const double centre = footing.centre_x + footing_dx, half = 0.5 * footing.width;
+  const long long j_base = std::llround((footing_base_y() - grid.y0) / h);
+  for (int j = static_cast<int>(std::max(0LL, j_base)); j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double x = grid.x0 + i * h;
+      if (std::fabs(x - centre) > half + tol) continue;
+      const std::size_t k = static_cast<std::size_t>(j) * grid.nx + i;
+      w.set_y[k] = reaction_footing;
+      w.fix_vy[k] = vfy;
+      if (footing.rough) {
+        w.set_x[k] = reaction_footing;
+        w.fix_vx[k] = vfx;
+      }
+    }
+}
+
+int Simulation::wall_node(double coordinate, double origin) const {
+  return static_cast<int>(std::lround((coordinate - origin) / grid.h));
+}
+
+// Rigid walls as symmetry planes: the grid field of the body's mirror image beyond the wall is
+// folded onto the interior nodes (odd components change sign), then mirrored back to the
+// exterior nodes. An odd velocity component is zero on the wall; a smooth wall keeps the
+// tangential component even. This gives the nodes next to the wall the force of the missing
+// particles, which plain node fixity leaves unbalanced with B-splines (docs/mpm.md).
+void Simulation::fold(double* q, Component c) const {
+  const int nx = grid.nx, ny = grid.ny;
+  auto at = [&](int i, int j) -> double& { return q[static_cast<std::size_t>(j) * nx + i]; };
+  if (walls.sides != SideWall::none) {
+    const double s = c == Component::scalar ? 1.0 : (c == Component::x || walls.sides == SideWall::fixed ? -1.0 : 1.0);
+    for (int wi : {wall_node(walls.left, grid.x0), wall_node(walls.right, grid.x0)}) {
+      const int dir = wi == wall_node(walls.left, grid.x0) ? -1 : 1;  // exterior side
+      for (int j = 0; j < ny; ++j) {
+        for (int k = 1; wi + dir * k >= 0 && wi + dir * k < nx && wi - dir * k >= 0 && wi - dir * k < nx; ++k)
+          at(wi - dir * k, j) += s * at(wi + dir * k, j);
+        at(wi, j) *= 1.0 + s;
+        for (int k = 1; wi + dir * k >= 0 && wi + dir * k < nx && wi - dir * k >= 0 && wi - dir * k < nx; ++k)
+          at(wi + dir * k, j) = s * at(wi - dir * k, j);
+      }
+    }
+  }
+  if (walls.base_fixed) {
+    const double s = c == Component::scalar ? 1.0 : -1.0;  // no slip: both components odd
+    const int wj = wall_node(walls.base, grid.y0);
+    for (int i = 0; i < nx; ++i) {
+      for (int k = 1; wj - k >= 0 && wj + k < ny; ++k) at(i, wj + k) += s * at(i, wj - k);
+      at(i, wj) *= 1.0 + s;
+      for (int k = 1; wj - k >= 0 && wj + k < ny; ++k) at(i, wj - k) = s * at(i, wj + k);
+    }
+  }
+}
+
+// Which wall's mirror image acts on node (i, j), if any (those within the stencil's reach).
+int Simulation::wall_of(int i, int j) const {
+  if (walls.base_fixed && j <= wall_node(walls.base, grid.y0) + 2) return reaction_base;
+  if (walls.sides != SideWall::none && i <= wall_node(walls.left, grid.x0) + 2) return reaction_left;
+  if (walls.sides != SideWall::none && i >= wall_node(walls.right, grid.x0) - 2) return reaction_right;
+  return free_node;
+}
+
+void Simulation::nodal_velocity(const double* px, const double* py, double* vx, double* vy) {
+  const Work& w = *work_;
+  for (std::size_t i = 0; i < grid.nodes(); ++i) {
+    const double m = w.mass[i];
+    vx[i] = m > 0.0 ? px[i] / m : 0.0;
+    vy[i] = m > 0.0 ? py[i] / m : 0.0;
+    if (w.set_x[i] != free_node) vx[i] = w.fix_vx[i];
+    if (w.set_y[i] != free_node) vy[i] = w.fix_vy[i];
+  }
+}
+
+void Simulation::update_stress(const double* vx, const double* vy, double dt_half) {
+  Work& w = *work_;
+  Particles& P = particles;
+  const int T = w.scatter.threads();
+  std::vector<long long> failed(T, -1);
+  std::vector<std::string> messages(T);
+  parallel_for(T, P.n, [&](int t, std::size_t p) {
+    double L[4] = {0, 0, 0, 0};  // L_ij = dv_i/dx_j: xx xy yx yy
+    w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
+      L[0] += vx[i] * gx;
+      L[1] += vx[i] * gy;
+      L[2] += vy[i] * gx;
+      L[3] += vy[i] * gy;
+    });
+    double* F = &P.F[4 * p];
+    const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
+    F[0] += dt_half * (L[0] * F0 + L[1] * F2);
+    F[1] += dt_half * (L[0] * F1 + L[1] * F3);
+    F[2] += dt_half * (L[2] * F0 + L[3] * F2);
+    F[3] += dt_half * (L[2] * F1 + L[3] * F3);
+    double* e = &P.strain[3 * p];
+    e[0] += L[0] * dt_half;
+    e[1] += L[3] * dt_half;
+    e[2] += 0.5 * (L[1] + L[2]) * dt_half;
+    const acst_status st =
+        materials[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p, L, dt_half);
+    if (st.code != ACST_OK && failed[t] < 0) {
+      failed[t] = static_cast<long long>(p);
+      messages[t] = "material '" + materials[P.material[p]]->name() + "': " + st.message;
+    }
+  });
+  for (int t = 0; t < T; ++t)
+    if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t]);
+}
+
+void Simulation::xpic_velocity(int order) {
+  Work& w = *work_;
+  Particles& P = particles;
+  const std::size_t N = grid.nodes();
+  // v(m) = sum_k dv(k), dv(1) = v_L, dv(k) = dv(k-1) - S+S dv(k-1), constrained parts of dv(k>1) zero.
+  std::vector<double> dvx(w.vx), dvy(w.vy);
+  w.xpx = w.vx;
+  w.xpy = w.vy;
+  for (int k = 2; k <= order; ++k) {
+    parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
+      double sx = 0.0, sy = 0.0;
+      w.stencil(p, [&](std::size_t i, double S, double, double) {
+        sx += S * dvx[i];
+        sy += S * dvy[i];
+      });
+      w.pvx[p] = sx;
+      w.pvy[p] = sy;
+    });
+    double* out[2] = {w.fx.data(), w.fy.data()};  // force already consumed: reused as scratch
+    w.scatter.run(2, out, P.n, [&](std::size_t p, double* const* f) {
+      const double mx = P.mass[p] * w.pvx[p], my = P.mass[p] * w.pvy[p];
+      w.stencil(p, [&](std::size_t i, double S, double, double) {
+        f[0][i] += S * mx;
+        f[1][i] += S * my;
+      });
+    });
+    fold(w.fx.data(), Component::x);
+    fold(w.fy.data(), Component::y);
+    for (std::size_t i = 0; i < N; ++i) {
+      const double m = w.mass[i];
+      dvx[i] = (m > 0.0 && w.set_x[i] == free_node) ? dvx[i] - w.fx[i] / m : 0.0;
+      dvy[i] = (m > 0.0 && w.set_y[i] == free_node) ? dvy[i] - w.fy[i] / m : 0.0;
+      w.xpx[i] += dvx[i];
+      w.xpy[i] += dvy[i];
+    }
+  }
+}
+
+void Simulation::step() {
+  Work& w = *work_;
+  Particles& P = particles;
+  const std::size_t n = P.n, N = grid.nodes();
+  const int T = w.scatter.threads();
+  if (step_count > 0 && step_count % settings.wave_speed_every == 0) refresh_wave_speeds();
+  dt = stable_time_step();
+
+  compute_shape_functions();
+
+  // 2. Mass and momentum to the grid; lumped velocity with the constraints applied.
+  {
+    double* out[3] = {w.mass.data(), w.ax.data(), w.ay.data()};
+    w.scatter.run(3, out, n, [&](std::size_t p, double* const* f) {
+      const double m = P.mass[p], mvx = m * P.vx[p], mvy = m * P.vy[p];
+      w.stencil(p, [&](std::size_t i, double S, double, double) {
+        f[0][i] += S * m;
+        f[1][i] += S * mvx;
+        f[2][i] += S * mvy;
+      });
+    });
+  }
+  w.mass_body = w.mass;
+  fold(w.mass.data(), Component::scalar);
+  fold(w.ax.data(), Component::x);
+  fold(w.ay.data(), Component::y);
+  update_constraints();
+  nodal_velocity(w.ax.data(), w.ay.data(), w.vx.data(), w.vy.data());
+
+  // 3. First half of the stress update with v_L.
+  update_stress(w.vx.data(), w.vy.data(), 0.5 * dt);
+
+  // 4. Internal force, weight and surcharge; constrained components give the reactions.
+  {
+    double* out[2] = {w.fx.data(), w.fy.data()};
+    const double g = settings.gravity, q = surcharge;
+    w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
+      const double V = kilo * P.volume(p);
+      const double* s = &P.stress[6 * p];
+      const double sxx = V * s[0], syy = V * s[1], sxy = V * s[3];
+      const double by = -P.weight_mass[p] * g - kilo * q * P.surcharge_length[p];
+      w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
+        f[0][i] -= sxx * gx + sxy * gy;
+        f[1][i] += by * S - (sxy * gx + syy * gy);
+      });
+    });
+  }
+  // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
+  // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
+  reaction.fill(Reaction{});
+  w.fx_body = w.fx;
+  w.fy_body = w.fy;
+  fold(w.fx.data(), Component::x);
+  fold(w.fy.data(), Component::y);
+  for (std::size_t i = 0; i < N; ++i) {
+    if (w.mass[i] <= 0.0) {
+      w.ax[i] = w.ay[i] = 0.0;
+      continue;
+    }
+    const double share = w.mass_body[i] / w.mass[i];
+    const int wall = wall_of(static_cast<int>(i % grid.nx), static_cast<int>(i / grid.nx));
+    if (wall != free_node) {
+      reaction[wall].fx += share * w.fx[i] - w.fx_body[i];
+      reaction[wall].fy += share * w.fy[i] - w.fy_body[i];
+    }
+    if (w.set_x[i] != free_node) reaction[w.set_x[i]].fx -= share * w.fx[i];
+    if (w.set_y[i] != free_node) reaction[w.set_y[i]].fy -= share * w.fy[i];
+    // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
+    if (w.set_x[i] != free_node) w.fx[i] = 0.0;
+    if (w.set_y[i] != free_node) w.fy[i] = 0.0;
+    w.ax[i] = w.fx[i] / w.mass[i];
+    w.ay[i] = w.fy[i] / w.mass[i];
+  }
+
+  // 5. Particle velocities and positions: FLIP, or XPIC(m) (PIC = XPIC(1)), with damping.
+  const bool xpic = is_xpic_step(step_count);
+  if (xpic) xpic_velocity(settings.update == ParticleUpdate::PIC ? 1 : settings.xpic_order);
+  const double ag = settings.grid_damping, ap = settings.particle_damping;
+  parallel_for(T, n, [&](int, std::size_t p) {
+    double svx = 0, svy = 0, sax = 0, say = 0, smx = 0, smy = 0;
+    w.stencil(p, [&](std::size_t i, double S, double, double) {
+      svx += S * w.vx[i];
+      svy += S * w.vy[i];
+      sax += S * w.ax[i];
+      say += S * w.ay[i];
+      if (xpic) {
+        smx += S * w.xpx[i];
+        smy += S * w.xpy[i];
+      }
+    });
+    const double vx0 = P.vx[p], vy0 = P.vy[p];
+    double vx1, vy1;
+    if (xpic) {
+      vx1 = smx + sax * dt - (ag * svx + ap * vx0) * dt;
+      vy1 = smy + say * dt - (ag * svy + ap * vy0) * dt;
+    } else {
+      vx1 = vx0 + (sax - ag * svx - ap * vx0) * dt;
+      vy1 = vy0 + (say - ag * svy - ap * vy0) * dt;
+    }
+    P.vx[p] = vx1;
+    P.vy[p] = vy1;
+    P.x[p] += (svx + 0.5 * (vx1 - vx0)) * dt;
+    P.y[p] += (svy + 0.5 * (vy1 - vy0)) * dt;
+  });
+
+  // 6. Momentum re-extrapolated from the new particle velocities; second half stress update.
+  {
+    double* out[2] = {w.ux.data(), w.uy.data()};
+    w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
+      const double mvx = P.mass[p] * P.vx[p], mvy = P.mass[p] * P.vy[p];
+      w.stencil(p, [&](std::size_t i, double S, double, double) {
+        f[0][i] += S * mvx;
+        f[1][i] += S * mvy;
+      });
+    });
+  }
+  fold(w.ux.data(), Component::x);
+  fold(w.uy.data(), Component::y);
+  nodal_velocity(w.ux.data(), w.uy.data(), w.ux.data(), w.uy.data());
+  update_stress(w.ux.data(), w.uy.data(), 0.5 * dt);
+
+  // Footing kinematics and the work it does on the soil.
+  if (footing.active) {
+    const double vfx = footing.speed * std::sin(footing.inclination), vfy = -footing.speed * std::cos(footing.inclination);
+    footing_work += (reaction[reaction_footing].fx * vfx + reaction[reaction_footing].fy * vfy) * dt;
+    footing_dx += vfx * dt;
+    footing_dy += vfy * dt;
+  }
+  time += dt;
+  ++step_count;
+}
+
+}  // namespace acst::mpm

@@ -1,0 +1,197 @@
+// acst_rotate_state: the objective rotation a large-deformation host (MPM) applies before each
+// update. At the ABI the stress holds tensor shear components and the strain engineering ones;
+// this file rotates them independently of the library, as 3x3 matrices Q A Q^T.
+// Objectivity of the ACST update means rotate-then-update equals update-then-rotate: the two
+// routes do the same arithmetic in two frames, so they differ by round-off only (1e-9 relative
+// leaves room for it to grow over a path through the integrator's error control).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "abi_model.hpp"
+#include "acst.h"
+#include "test_materials.hpp"
+
+namespace {
+
+using acst::test::AbiModel;
+using acst::test::Voigt;
+using RowMajor3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+constexpr double frame_round_off = 1e-9;
+
+std::string calibrated_acst() { return acst::test::read_text("data/parameters/toyoura_acst_calibrated.json"); }
+
+// shear_factor 1 for stress-like (tensor shear) vectors, 2 for engineering strain.
+Eigen::Matrix3d matrix_of(const double* v, double shear_factor) {
+  Eigen::Matrix3d m;
+  m << v[0], v[3] / shear_factor, v[4] / shear_factor, v[3] / shear_factor, v[1], v[5] / shear_factor,
+      v[4] / shear_factor, v[5] / shear_factor, v[2];
+  return m;
+}
+
+void rotate_by_hand(double* v, const Eigen::Matrix3d& Q, double shear_factor) {
+  const Eigen::Matrix3d r = Q * matrix_of(v, shear_factor) * Q.transpose();
+  const double out[6] = {r(0, 0), r(1, 1), r(2, 2), shear_factor * r(0, 1), shear_factor * r(0, 2),
+                         shear_factor * r(1, 2)};
+  for (int i = 0; i < 6; ++i) v[i] = out[i];
+}
+
+const Eigen::Matrix3d general_rotation =
+    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, -2.0, 0.5).normalized()).toRotationMatrix();
+
+acst_status rotate(Voigt& stress, std::vector<double>& statev, const acst_model* m, const Eigen::Matrix3d& Q) {
+  const RowMajor3 q = Q;
+  return acst_rotate_state(stress.data(), statev.empty() ? nullptr : statev.data(), m, q.data());
+}
+
+struct SandPoint {
+  Voigt stress;
+  std::vector<double> statev = std::vector<double>(ACST_NSTATV);
+};
+
+// Anisotropic stress with shear and a tilted deposition direction, so that every stress and
+// fabric component is non-zero, then loaded into the plastic range.
+SandPoint loaded_sand_point(const acst_model* m) {
+  SandPoint p;
+  const double s0[6] = {-120, -90, -70, 12, -6, 4}, b[3] = {0.3, 1.0, -0.4};
+  EXPECT_EQ(acst_initial_state(p.statev.data(), p.stress.data(), m, s0, 0.75, b).code, ACST_OK);
+  const double d[6] = {-2e-4, 5e-5, 6e-5, 8e-5, -3e-5, 2e-5};
+  for (int k = 0; k < 10; ++k)
+    EXPECT_EQ(acst_update(p.stress.data(), p.statev.data(), nullptr, nullptr, m, d).code, ACST_OK);
+  return p;
+}
+
+double max_abs(const double* v, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = std::max(m, std::abs(v[i]));
+  return m;
+}
+
+TEST(CAbiRotation, RotateThenUpdateEqualsUpdateThenRotateForAcst) {
+  AbiModel m(calibrated_acst());
+  ASSERT_STREQ(acst_model_kind(m.get()), "ACST");
+  SandPoint unrotated = loaded_sand_point(m.get());
+  SandPoint rotated = unrotated;
+  ASSERT_EQ(rotate(rotated.stress, rotated.statev, m.get(), general_rotation).code, ACST_OK);
+  int plastic_steps = 0;
+  for (int k = 0; k < 40; ++k) {
+    double d[6] = {-1e-4, 2e-5 * std::cos(0.3 * k), 3e-5, 6e-5 * std::sin(0.2 * k), -2e-5, 4e-5};
+    if (k >= 25) for (double& v : d) v = -0.5 * v;  // unload and reverse
+    acst_counters c;
+    ASSERT_EQ(acst_update(unrotated.stress.data(), unrotated.statev.data(), nullptr, &c, m.get(), d).code, ACST_OK);
+    plastic_steps += c.plastic;
+    rotate_by_hand(d, general_rotation, 2.0);
+    ASSERT_EQ(acst_update(rotated.stress.data(), rotated.statev.data(), nullptr, nullptr, m.get(), d).code, ACST_OK);
+
+    SandPoint expected = unrotated;
+    rotate_by_hand(expected.stress.data(), general_rotation, 1.0);
+    rotate_by_hand(expected.statev.data(), general_rotation, 1.0);  // the fabric, slots 0-5
+    const double stress_scale = max_abs(expected.stress.data(), 6);
+    for (int i = 0; i < 6; ++i)
+      ASSERT_NEAR(rotated.stress[i], expected.stress[i], frame_round_off * stress_scale) << "step " << k << " i " << i;
+    const double fabric_scale = max_abs(expected.statev.data(), 6);
+    for (int i = 0; i < 6; ++i)
+      ASSERT_NEAR(rotated.statev[i], expected.statev[i], frame_round_off * fabric_scale) << "step " << k;
+    for (int i = 6; i < ACST_NSTATV; ++i)
+      ASSERT_NEAR(rotated.statev[i], expected.statev[i], frame_round_off * std::max(1.0, std::abs(expected.statev[i])))
+          << "step " << k << ", " << acst_state_name(m.get(), i);
+  }
+  EXPECT_GT(plastic_steps, 10) << "the path must exercise the plastic update";
+}
+
+TEST(CAbiRotation, InvariantsAreUnchanged) {
+  AbiModel m(calibrated_acst());
+  SandPoint p = loaded_sand_point(m.get());
+  double before[ACST_NDIAGNOSTICS], after[ACST_NDIAGNOSTICS];
+  ASSERT_EQ(acst_diagnostics(before, m.get(), p.stress.data(), p.statev.data()).code, ACST_OK);
+  ASSERT_EQ(rotate(p.stress, p.statev, m.get(), general_rotation).code, ACST_OK);
+  ASSERT_EQ(acst_diagnostics(after, m.get(), p.stress.data(), p.statev.data()).code, ACST_OK);
+  for (const char* name : {"p", "q", "fabric_norm", "R", "A", "sin3theta"}) {
+    int i = 0;
+    while (std::string(acst_diagnostic_name(i)) != name) ++i;
+    EXPECT_NEAR(after[i], before[i], 1e-12 * std::max(1.0, std::abs(before[i]))) << name;
+  }
+}
+
+TEST(CAbiRotation, QuarterTurnAboutZSwapsComponentsExactly) {
+  AbiModel m(calibrated_acst());
+  const SandPoint p = loaded_sand_point(m.get());
+  SandPoint r = p;
+  const double Q[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  ASSERT_EQ(acst_rotate_state(r.stress.data(), r.statev.data(), m.get(), Q).code, ACST_OK);
+  // sigma' = Q sigma Q^T with e_1 -> e_2, e_2 -> -e_1: 11 <-> 22, 12 and 13 change sign with 23 <-> 13.
+  auto expect_swapped = [](const double* a, const double* b, const char* what) {
+    EXPECT_EQ(b[0], a[1]) << what;
+    EXPECT_EQ(b[1], a[0]) << what;
+    EXPECT_EQ(b[2], a[2]) << what;
+    EXPECT_EQ(b[3], -a[3]) << what;
+    EXPECT_EQ(b[4], -a[5]) << what;
+    EXPECT_EQ(b[5], a[4]) << what;
+  };
+  expect_swapped(p.stress.data(), r.stress.data(), "stress");
+  expect_swapped(p.statev.data(), r.statev.data(), "fabric");
+  for (int i = 6; i < ACST_NSTATV; ++i) EXPECT_EQ(r.statev[i], p.statev[i]) << "scalar state is not rotated";
+}
+
+TEST(CAbiRotation, InvalidRotationsAreRejectedWithStateUnchanged) {
+  AbiModel m(calibrated_acst());
+  SandPoint p = loaded_sand_point(m.get());
+  const SandPoint before = p;
+  const RowMajor3 proper = general_rotation;
+  RowMajor3 perturbed = proper;
+  perturbed(0, 1) += 1e-7;  // orthogonal to 1e-7 only
+  const RowMajor3 reflection = Eigen::Vector3d(1, 1, -1).asDiagonal();
+  const RowMajor3 improper = proper * reflection;
+  RowMajor3 stretched = 1.001 * proper, with_nan = proper;
+  with_nan(2, 2) = NAN;
+  const RowMajor3* invalid[] = {&perturbed, &reflection, &improper, &stretched, &with_nan};
+  for (const RowMajor3* Q : invalid) {
+    const acst_status st = acst_rotate_state(p.stress.data(), p.statev.data(), m.get(), Q->data());
+    EXPECT_EQ(st.code, ACST_INVALID_INPUT);
+    EXPECT_NE(std::string(st.message).find("proper orthogonal"), std::string::npos) << st.message;
+    EXPECT_EQ(p.stress, before.stress);
+    EXPECT_EQ(p.statev, before.statev);
+  }
+  EXPECT_EQ(acst_rotate_state(p.stress.data(), nullptr, m.get(), proper.data()).code, ACST_INVALID_INPUT)
+      << "ACST has state to rotate";
+  EXPECT_EQ(acst_rotate_state(p.stress.data(), p.statev.data(), m.get(), nullptr).code, ACST_INVALID_INPUT);
+  EXPECT_EQ(acst_rotate_state(p.stress.data(), p.statev.data(), nullptr, proper.data()).code, ACST_INVALID_INPUT);
+  EXPECT_EQ(p.stress, before.stress);
+  EXPECT_EQ(p.statev, before.statev);
+}
+
+TEST(CAbiRotation, ReferenceMaterialsRotateTheirStress) {
+  AbiModel elastic(R"({"model": "linear_elastic", "parameters": {"E": 20000, "nu": 0.25}})");
+  AbiModel plastic(R"({"model": "von_mises", "parameters": {"E": 20000, "nu": 0.25, "yield_stress": 90}})");
+  const Voigt s0{-100, -70, -40, 15, -8, 5};
+
+  Voigt s = s0;
+  std::vector<double> none;
+  ASSERT_EQ(rotate(s, none, elastic.get(), general_rotation).code, ACST_OK) << "no state: statev may be NULL";
+  Voigt expected = s0;
+  rotate_by_hand(expected.data(), general_rotation, 1.0);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(s[i], expected[i], 1e-13 * 100.0);
+
+  // von Mises: the plastic strain is a scalar, and rotate-then-update = update-then-rotate.
+  Voigt a{}, b{};
+  std::vector<double> eps_a(1), eps_b(1);
+  ASSERT_EQ(acst_initial_state(eps_a.data(), a.data(), plastic.get(), s0.data(), 0.0, nullptr).code, ACST_OK);
+  b = a;
+  eps_b = eps_a;
+  double d[6] = {-3e-3, 1e-3, 0.5e-3, 2e-3, -1e-3, 0.5e-3};
+  acst_counters c;
+  ASSERT_EQ(acst_update(a.data(), eps_a.data(), nullptr, &c, plastic.get(), d).code, ACST_OK);
+  ASSERT_EQ(c.plastic, 1);
+  rotate_by_hand(a.data(), general_rotation, 1.0);
+  ASSERT_EQ(rotate(b, eps_b, plastic.get(), general_rotation).code, ACST_OK);
+  rotate_by_hand(d, general_rotation, 2.0);
+  ASSERT_EQ(acst_update(b.data(), eps_b.data(), nullptr, nullptr, plastic.get(), d).code, ACST_OK);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(b[i], a[i], 1e-12 * 100.0);
+  EXPECT_NEAR(eps_b[0], eps_a[0], 1e-12 * eps_a[0]);
+}
+
+}  // namespace

@@ -1,0 +1,75 @@
+// Bad MPM scenes: each error names the JSON path and what is allowed.
+#include <gtest/gtest.h>
+
+#include "acst_mpm/scene.hpp"
+
+using namespace acst::mpm;
+
+namespace {
+
+const std::string good = R"({"name": "s", "grid": {"cell_size": 0.5},
+  "materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}},
+  "bodies": [{"material": "soil", "x_range": [0, 2], "y_range": [0, 1], "density": 1000}],
+  "footing": {"width": 0.5, "centre_x": 1, "speed": 0.01}, "stop": {"S_over_B": 0.1}})";
+
+std::string replaced(const std::string& from, const std::string& to) {
+  std::string s = good;
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+void expect_error(const std::string& text, const std::string& path, const std::string& words) {
+  try {
+    parse_scene(text);
+    FAIL() << "accepted a scene that should fail at " << path;
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind(path, 0), 0u) << m;
+    EXPECT_NE(m.find(words), std::string::npos) << m;
+  }
+}
+
+}  // namespace
+
+TEST(MpmScene, TheGoodSceneParses) {
+  const Scene s = parse_scene(good);
+  EXPECT_EQ(s.bodies.size(), 1u);
+  EXPECT_TRUE(s.footing.has_value());
+  EXPECT_EQ(*s.stop.S_over_B, 0.1);
+}
+
+TEST(MpmScene, ErrorsNameThePath) {
+  expect_error(replaced(R"("name": "s",)", R"("name": "s", "colour": 1,)"), "/colour", "unknown key");
+  expect_error(replaced(R"("cell_size": 0.5)", R"("cell_size": -1)"), "/grid/cell_size", "out of range");
+  expect_error(replaced(R"("density": 1000)", R"("density": "heavy")"), "/bodies/0/density", "expected a number");
+  expect_error(replaced(R"("x_range": [0, 2])", R"("x_range": [0, 2.2])"), "/bodies/0", "grid lines");
+  expect_error(replaced(R"("material": "soil")", R"("material": "rock")"), "/bodies/0/material", "not defined");
+  expect_error(replaced(R"("nu": 0.3)", R"("nu": 0.7)"), "/materials/soil", "nu");
+  expect_error(replaced(R"("speed": 0.01)", R"("speed": 0)"), "/footing/speed", "out of range");
+  expect_error(replaced(R"("stop": {"S_over_B": 0.1})", R"("stop": {})"), "/stop", "one of");
+  expect_error(replaced(R"("footing": {"width": 0.5, "centre_x": 1, "speed": 0.01}, )", ""), "/stop/S_over_B",
+               "needs a /footing");
+  expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "solver": {"particle_update": "APIC"},)"),
+               "/solver/particle_update", "FLIP, PIC, XPIC");
+  expect_error(replaced(R"("materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}})",
+                        R"("materials": {"soil": "no/such/file.json"})"),
+               "/materials/soil", "cannot open");
+  expect_error("{not json", "/", "invalid JSON");
+}
+
+TEST(MpmScene, SandNeedsAVoidRatio) {
+  const std::string sand = R"({"name": "s", "grid": {"cell_size": 0.5},
+    "materials": {"sand": ")" + std::string(ACST_SOURCE_DIR) + R"(/data/parameters/toyoura_acst_calibrated.json"},
+    "bodies": [{"material": "sand", "x_range": [0, 2], "y_range": [0, 1], "density": 1600}], "stop": {"steps": 1}})";
+  try {
+    build_simulation(parse_scene(sand));
+    FAIL() << "a sand body without void ratio was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("/bodies/0"), std::string::npos) << e.what();
+  }
+}
+
+TEST(MpmScene, MissingSceneFileIsAnError) {
+  EXPECT_THROW(read_scene("/no/such/scene.json"), SceneError);
+}
