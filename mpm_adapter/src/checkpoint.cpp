@@ -49,7 +49,7 @@ struct Reader {
     pod(n);
     if (n > (in.size() - at) / sizeof(T)) throw SimulationError("checkpoint '" + file + "' is truncated");
     v.resize(n);
-    std::memcpy(v.data(), in.data() + at, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), in.data() + at, n * sizeof(T));  // data() may be null when empty
     at += n * sizeof(T);
   }
   std::string str() {
