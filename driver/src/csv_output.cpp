@@ -1,10 +1,7 @@
 // The CSV table of an element test.
 #include <charconv>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "acst/integration/options.hpp"
 #include "acst_driver/number_format.hpp"

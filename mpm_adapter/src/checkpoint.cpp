@@ -62,13 +62,14 @@ struct Reader {
   }
 };
 
-// One list of the evolving particle arrays, shared by writer and reader.
-template <class F>
-void particle_arrays(Particles& P, F&& f) {
-  for (auto* v : {&P.x, &P.y, &P.x_initial, &P.y_initial, &P.vx, &P.vy, &P.mass, &P.weight_mass, &P.volume_initial,
-                  &P.density, &P.F, &P.stress, &P.strain, &P.statev, &P.surcharge_length, &P.wave_speed})
+// One list of the evolving particle arrays, shared by writer (const) and reader.
+template <class P, class F>
+void particle_arrays(P& particles, F&& f) {
+  auto& p = particles;
+  for (auto* v : {&p.x, &p.y, &p.x_initial, &p.y_initial, &p.vx, &p.vy, &p.mass, &p.weight_mass, &p.volume_initial,
+                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.wave_speed})
     f(*v);
-  f(P.material);
+  f(p.material);
 }
 
 template <class IO, class Sim, class State>
@@ -99,10 +100,8 @@ void write_checkpoint(const std::string& path, const Scene& scene, const Simulat
   w.out.append(magic, sizeof magic);
   w.str(scene.text);
   w.pod<std::uint64_t>(sim.particles.n);
-  Simulation& s = const_cast<Simulation&>(sim);  // the writer only reads
-  RunState& st = const_cast<RunState&>(state);
-  particle_arrays(s.particles, [&](auto& v) { w.vec(v); });
-  run_fields(w, s, st);
+  particle_arrays(sim.particles, [&](const auto& v) { w.vec(v); });
+  run_fields(w, sim, state);
   acst::driver::write_file_atomically(path, w.out);
 }
 

@@ -189,7 +189,7 @@ class Run {
 
   void progress(double wall, long long steps) {
     const double rate = steps / std::max(wall, 1e-9), frac = progress_fraction();
-    const double left = frac > 0 ? wall * (1.0 - frac) / frac * 1.0 : NAN;
+    const double left = frac > 0 ? wall * (1.0 - frac) / frac : NAN;
     const double q = st_.history.empty() ? 0.0 : st_.history.back().q_kPa;
     std::fprintf(stderr, "\r%s: step %lld  t %.3f s  S/B %.4f  q %.1f kPa  %.0f steps/s  left %s   ", scene_.name.c_str(),
                  sim_.step_count, sim_.time, S_over_B(), q, rate, duration_text(left).c_str());

@@ -194,27 +194,24 @@ int Simulation::wall_node(double coordinate, double origin) const {
 void Simulation::fold(double* q, Component c) const {
   const int nx = grid.nx, ny = grid.ny;
   auto at = [&](int i, int j) -> double& { return q[static_cast<std::size_t>(j) * nx + i]; };
+  // node(k): the node k steps inward from the wall (k < 0: beyond it); `reach` exterior nodes.
+  auto fold_line = [](double s, int reach, auto&& node) {
+    for (int k = 1; k <= reach; ++k) node(k) += s * node(-k);
+    node(0) *= 1.0 + s;
+    for (int k = 1; k <= reach; ++k) node(-k) = s * node(k);
+  };
   if (walls.sides != SideWall::none) {
     const double s = c == Component::scalar ? 1.0 : (c == Component::x || walls.sides == SideWall::fixed ? -1.0 : 1.0);
-    for (int wi : {wall_node(walls.left, grid.x0), wall_node(walls.right, grid.x0)}) {
-      const int dir = wi == wall_node(walls.left, grid.x0) ? -1 : 1;  // exterior side
-      for (int j = 0; j < ny; ++j) {
-        for (int k = 1; wi + dir * k >= 0 && wi + dir * k < nx && wi - dir * k >= 0 && wi - dir * k < nx; ++k)
-          at(wi - dir * k, j) += s * at(wi + dir * k, j);
-        at(wi, j) *= 1.0 + s;
-        for (int k = 1; wi + dir * k >= 0 && wi + dir * k < nx && wi - dir * k >= 0 && wi - dir * k < nx; ++k)
-          at(wi + dir * k, j) = s * at(wi - dir * k, j);
-      }
+    const int il = wall_node(walls.left, grid.x0), ir = wall_node(walls.right, grid.x0);
+    for (int j = 0; j < ny; ++j) {
+      fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
+      fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
     }
   }
   if (walls.base_fixed) {
     const double s = c == Component::scalar ? 1.0 : -1.0;  // no slip: both components odd
-    const int wj = wall_node(walls.base, grid.y0);
-    for (int i = 0; i < nx; ++i) {
-      for (int k = 1; wj - k >= 0 && wj + k < ny; ++k) at(i, wj + k) += s * at(i, wj - k);
-      at(i, wj) *= 1.0 + s;
-      for (int k = 1; wj - k >= 0 && wj + k < ny; ++k) at(i, wj - k) = s * at(i, wj + k);
-    }
+    const int jb = wall_node(walls.base, grid.y0);
+    for (int i = 0; i < nx; ++i) fold_line(s, std::min(jb, ny - 1 - jb), [&](int k) -> double& { return at(i, jb + k); });
   }
 }
 
