@@ -1,0 +1,113 @@
+#pragma once
+// Small readers for JSON input: each checks the type and range of one value and throws an
+// InputError whose message starts with the JSON path and says what is allowed.
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "acst_common/input_error.hpp"
+
+namespace acst::common::fields {
+
+using nlohmann::json;
+
+[[noreturn]] inline void fail(const std::string& path, const std::string& what) {
+  throw InputError((path.empty() ? std::string("/") : path) + ": " + what);
+}
+
+inline std::string join(std::initializer_list<const char*> names) {
+  std::string s;
+  for (const char* n : names) s += (s.empty() ? "" : ", ") + std::string(n);
+  return s;
+}
+
+inline std::string shown(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+inline const json& object(const json& j, const std::string& path) {
+  if (!j.is_object()) fail(path, std::string("expected a JSON object, got ") + j.type_name());
+  return j;
+}
+
+// Rejects keys not in `allowed`, naming the allowed ones.
+inline void allow_keys(const json& j, std::initializer_list<const char*> allowed, const std::string& path) {
+  object(j, path);
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const char* a : allowed) ok = ok || item.key() == a;
+    if (!ok) fail(path + "/" + item.key(), "unknown key (allowed here: " + join(allowed) + ")");
+  }
+}
+
+// Exactly one of the keys (or at most one when `required` is false); returns it or "".
+inline std::string one_of(const json& j, std::initializer_list<const char*> keys, const std::string& path,
+                          bool required = true) {
+  std::string found;
+  for (const char* k : keys) {
+    if (!j.contains(k)) continue;
+    if (!found.empty()) fail(path + "/" + k, "give only one of " + join(keys) + " (also found " + found + ")");
+    found = k;
+  }
+  if (found.empty() && required) fail(path, "one of " + join(keys) + " is required");
+  return found;
+}
+
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  bool contains(double v) const {
+    return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  std::string text() const {
+    auto end = [](double v) { return std::isinf(v) ? std::string(v < 0 ? "-inf" : "inf") : shown(v); };
+    return std::string(lo_open || std::isinf(lo) ? "(" : "[") + end(lo) + ", " + end(hi) +
+           (hi_open || std::isinf(hi) ? ")" : "]");
+  }
+};
+inline Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, true}; }
+inline Range any() { return {}; }
+
+inline double number(const json& v, const std::string& path, const Range& r = any(), const std::string& unit = "") {
+  if (!v.is_number()) fail(path, std::string("expected a number") + (unit.empty() ? "" : " (" + unit + ")") + ", got " + v.type_name());
+  const double x = v.get<double>();
+  if (!r.contains(x)) fail(path, shown(x) + " is out of range; allowed: " + r.text() + (unit.empty() ? "" : " " + unit));
+  return x;
+}
+
+inline long long integer(const json& v, const std::string& path, long long lo, long long hi) {
+  if (!v.is_number_integer() && !(v.is_number() && std::floor(v.get<double>()) == v.get<double>()))
+    fail(path, std::string("expected an integer in [") + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                   (v.is_number() ? shown(v.get<double>()) : v.type_name()));
+  const double x = v.get<double>();
+  if (x < lo || x > hi)
+    fail(path, shown(x) + " is out of range; allowed: integers in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return static_cast<long long>(x);
+}
+
+inline std::string string(const json& v, const std::string& path) {
+  if (!v.is_string()) fail(path, std::string("expected a string, got ") + v.type_name());
+  return v.get<std::string>();
+}
+
+inline bool boolean(const json& v, const std::string& path) {
+  if (!v.is_boolean()) fail(path, std::string("expected true or false, got ") + v.type_name());
+  return v.get<bool>();
+}
+
+inline std::vector<double> numbers(const json& v, const std::string& path, std::size_t size, const std::string& what) {
+  if (!v.is_array() || v.size() != size)
+    fail(path, "expected an array of " + std::to_string(size) + " numbers (" + what + ")" +
+                   (v.is_array() ? ", got " + std::to_string(v.size()) + " entries" : std::string(", got ") + v.type_name()));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < size; ++i) out.push_back(number(v[i], path + "/" + std::to_string(i)));
+  return out;
+}
+
+}  // namespace acst::common::fields
