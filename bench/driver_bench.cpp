@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     drv::RunResult r = drv::run_scene(s);
     const double t_run = ms_since(t1);
     const auto t2 = Clock::now();
-    drv::write_file_atomically(csv, drv::csv_text(s, r));
+    acst::common::write_file_atomically(csv, drv::csv_text(s, r));
     const double t_write = ms_since(t2);
     total.push_back(ms_since(t0));
     parse.push_back(t_parse);

@@ -42,7 +42,7 @@ std::string description(const std::string& from = "", const std::string& to = ""
 std::string error_of(const std::string& text) {
   try {
     parse_fit_spec(text, base_dir, "t");
-  } catch (const FitError& e) {
+  } catch (const acst::common::InputError& e) {
     return e.what();
   }
   return "";
@@ -114,7 +114,7 @@ TEST(FitSpec, NotJsonAndMissingFile) {
   try {
     read_fit_spec(base_dir + "/no_such_fit.json");
     FAIL() << "no error";
-  } catch (const FitError& e) {
+  } catch (const acst::common::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot read"), std::string::npos);
   }
 }

@@ -23,7 +23,7 @@ void expect_error(const std::string& text, const std::string& path, const std::s
   try {
     parse_scene(text);
     FAIL() << "accepted a scene that should fail at " << path;
-  } catch (const SceneError& e) {
+  } catch (const acst::common::InputError& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind(path, 0), 0u) << m;
     EXPECT_NE(m.find(words), std::string::npos) << m;
@@ -55,7 +55,7 @@ TEST(MpmScene, ErrorsNameThePath) {
   expect_error(replaced(R"("materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}})",
                         R"("materials": {"soil": "no/such/file.json"})"),
                "/materials/soil", "cannot open");
-  expect_error("{not json", "/", "invalid JSON");
+  expect_error("{not json", "/", "not valid JSON");
 }
 
 TEST(MpmScene, SandNeedsAVoidRatio) {
@@ -65,11 +65,11 @@ TEST(MpmScene, SandNeedsAVoidRatio) {
   try {
     build_simulation(parse_scene(sand));
     FAIL() << "a sand body without void ratio was accepted";
-  } catch (const SceneError& e) {
+  } catch (const acst::common::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/bodies/0"), std::string::npos) << e.what();
   }
 }
 
 TEST(MpmScene, MissingSceneFileIsAnError) {
-  EXPECT_THROW(read_scene("/no/such/scene.json"), SceneError);
+  EXPECT_THROW(read_scene("/no/such/scene.json"), acst::common::InputError);
 }

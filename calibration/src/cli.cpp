@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "acst_calibration/fit_spec.hpp"
+#include "acst_common/cli.hpp"
+#include "acst_common/duration.hpp"
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
 #include "acst_calibration/report.hpp"
@@ -44,59 +47,21 @@ void usage(std::ostream& o) {
        "Example: acst_fit data/calibration/toyoura_acst_fit.json\n";
 }
 
-std::string seconds_text(double s) {
-  char buf[48];
-  if (s < 60) std::snprintf(buf, sizeof buf, "%.1f s", s);
-  else std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s / 60), static_cast<int>(s) % 60);
-  return buf;
-}
-
 }  // namespace
 
 int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  bool quiet = false, plot = true;
-  std::string output, file;
-  int threads = -1;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      usage(out);
-      return 0;
-    } else if (a == "--quiet") {
-      quiet = true;
-    } else if (a == "--no-plot") {
-      plot = false;
-    } else if (a == "--output" || a == "--threads") {
-      if (i + 1 >= args.size()) {
-        err << "acst_fit: " << a << " needs a value\n";
-        return 2;
-      }
-      const std::string v = args[++i];
-      if (a == "--output") {
-        output = v;
-      } else {
-        char* end = nullptr;
-        const long n = std::strtol(v.c_str(), &end, 10);
-        if (*end != '\0' || v.empty() || n < 0 || n > 1024) {
-          err << "acst_fit: --threads needs an integer in [0, 1024], got '" << v << "'\n";
-          return 2;
-        }
-        threads = static_cast<int>(n);
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      err << "acst_fit: unknown option '" << a << "' (see --help)\n";
-      return 2;
-    } else if (!file.empty()) {
-      err << "acst_fit: one fit description at a time (got '" << file << "' and '" << a << "')\n";
-      return 2;
-    } else {
-      file = a;
-    }
-  }
-  if (file.empty()) {
-    usage(err);
-    return 2;
-  }
+  std::ostringstream help;
+  usage(help);
+  common::CliSpec spec_cli("acst_fit", "fit description");
+  spec_cli.threads = true;
+  spec_cli.min_threads = 0;
+  common::CliArgs cli;
+  const int early = common::parse_command_line(spec_cli, args, help.str(), out, err, cli);
+  if (early >= 0) return early;
+  const bool quiet = cli.quiet, plot = cli.plot;
+  const std::string& output = cli.output;
+  const std::string& file = cli.inputs.front();
+  const int threads = cli.threads;
 
   const auto t0 = Clock::now();
   FitSpec spec;
@@ -104,7 +69,7 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     spec = read_fit_spec(file);
     if (threads >= 0) spec.optimizer.threads = threads;
     if (!output.empty()) spec.output_dir = output;
-  } catch (const FitError& e) {
+  } catch (const common::InputError& e) {
     err << "acst_fit: " << file << ": " << e.what() << '\n';
     return 2;
   }
@@ -127,13 +92,13 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     err << "  [" << phase << "] ";
     if (phase == "design") err << spec.optimizer.design_points << " points";
     else err << "iteration " << iteration << " of at most " << spec.optimizer.max_iterations << ", cost " << cost;
-    err << ", " << evaluations << " evaluations, " << seconds_text(s) << " elapsed ("
+    err << ", " << evaluations << " evaluations, " << common::duration_text(s) << " elapsed ("
         << static_cast<long>(problem->counters().simulations.load() / std::max(s, 1e-9)) << " element tests/s)\n";
   };
   FitResult result;
   try {
     result = fit(ls, spec.optimizer, quiet ? FitProgress{} : progress);
-  } catch (const FitError& e) {
+  } catch (const common::InputError& e) {
     err << "acst_fit: " << file << ": " << e.what() << '\n';
     return 2;
   }
@@ -154,7 +119,7 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
   if (!quiet) {
     out << spec.name << ": cost " << result.cost << " (RMS normalised error " << std::sqrt(result.cost) << ") after "
-        << result.evaluations << " evaluations in " << seconds_text(info.total_seconds) << "\n";
+        << result.evaluations << " evaluations in " << common::duration_text(info.total_seconds) << "\n";
     for (std::size_t j = 0; j < problem->variables().size(); ++j) {
       const auto i = static_cast<Eigen::Index>(j);
       char line[160];

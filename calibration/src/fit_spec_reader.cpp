@@ -9,22 +9,19 @@
 #include <sstream>
 
 #include "acst/json_input.hpp"
+#include "acst_common/files.hpp"
 #include "acst/parameters.hpp"
 #include "acst_calibration/fit_spec.hpp"
-#include "acst_driver/json_fields.hpp"
+#include "acst_common/json_fields.hpp"
 #include "acst_driver/lab_data.hpp"
+#include "acst_driver/material_object.hpp"
 
 namespace acst::calibration {
 
 using nlohmann::json;
-namespace f = driver::fields;
+namespace f = common::fields;
 
 namespace {
-
-std::string resolve(const std::string& base_dir, const std::string& name) {
-  const std::filesystem::path p(name);
-  return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
-}
 
 bool known(const char* const* begin, const char* const* end, const std::string& name) {
   return std::find_if(begin, end, [&](const char* n) { return name == n; }) != end;
@@ -34,37 +31,6 @@ std::string list(const char* const* begin, const char* const* end) {
   std::string s;
   for (auto it = begin; it != end; ++it) s += (s.empty() ? "" : ", ") + std::string(*it);
   return s;
-}
-
-json read_json_file(const std::string& file, const std::string& path, const std::string& what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) f::fail(path, "cannot read " + what + " '" + file + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  try {
-    return json::parse(ss.str());
-  } catch (const json::parse_error& e) {
-    f::fail(path, what + " '" + file + "' is not valid JSON: " + e.what());
-  }
-}
-
-// The material as a self-contained object {model, parameters, integrator}; a file's integrator
-// can be overridden as in scenes.
-json read_material(const json& j, const std::string& base_dir) {
-  f::object(j, "/material");
-  if (!j.contains("file")) {
-    f::allow_keys(j, {"model", "parameters", "integrator"}, "/material");
-    return j;
-  }
-  f::allow_keys(j, {"file", "integrator"}, "/material");
-  const std::string file = resolve(base_dir, f::string(j["file"], "/material/file"));
-  json m = read_json_file(file, "/material/file", "the material file");
-  f::object(m, "/material/file (" + file + ")");
-  if (j.contains("integrator")) {
-    f::object(j["integrator"], "/material/integrator");
-    for (const auto& item : j["integrator"].items()) m["integrator"][item.key()] = item.value();
-  }
-  return m;
 }
 
 // Checks one parameter value against the material's ranges, the other constants as in the base.
@@ -147,7 +113,7 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
   x.path = path;
   if (!e.contains("data")) f::fail(path + "/data", "required: the lab data file");
   const std::string name = f::string(e["data"], key_path("data"));
-  x.data_file = resolve(base_dir, name);
+  x.data_file = common::resolve(base_dir, name);
   driver::LabCurve lab;
   try {
     lab = driver::read_commented_csv(x.data_file, true);  // tables have text columns
@@ -294,7 +260,7 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
   s.name = j.contains("name") ? f::string(j["name"], "/name") : default_name;
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
 
-  s.material = read_material(j["material"], base_dir);
+  s.material = driver::read_material_object(j["material"], "/material", base_dir).object;
   Parameters base;
   try {
     f::allow_keys(s.material, {"model", "parameters", "integrator"}, "/material");
@@ -352,26 +318,14 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
 }  // namespace
 
 FitSpec parse_fit_spec(const std::string& text, const std::string& base_dir, const std::string& default_name) {
-  try {
-    json j;
-    try {
-      j = json::parse(text);
-    } catch (const json::parse_error& e) {
-      f::fail("", std::string("the fit description is not valid JSON: ") + e.what());
-    }
-    return parse(j, base_dir, default_name.empty() ? "fit" : default_name);
-  } catch (const driver::SceneError& e) {
-    throw FitError(e.what());
-  }
+  return parse(f::parse(text, "", "the fit description"), base_dir, default_name.empty() ? "fit" : default_name);
 }
 
 FitSpec read_fit_spec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FitError("cannot read the fit description '" + path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::optional<std::string> text = common::read_file(path);
+  if (!text) throw common::InputError("cannot read the fit description '" + path + "'");
   const std::filesystem::path p(path);
-  FitSpec s = parse_fit_spec(ss.str(), p.parent_path().string(), p.stem().string());
+  FitSpec s = parse_fit_spec(*text, p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

@@ -244,7 +244,7 @@ FitResult fit(const LeastSquaresProblem& problem, const OptimizerSettings& o, co
   const BoundTransform transform{problem.lower, problem.upper};
   FitResult result;
   if (problem.residual_count < problem.start.size())
-    throw FitError("/parameters: " + std::to_string(problem.start.size()) + " fitted values but only " +
+    throw common::InputError("/parameters: " + std::to_string(problem.start.size()) + " fitted values but only " +
                    std::to_string(problem.residual_count) + " measured points");
 
   auto t0 = std::chrono::steady_clock::now();

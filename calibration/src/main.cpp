@@ -1,9 +1,10 @@
 // acst_fit: fits ACST or isotropic parameters to lab curves (see --help).
 #include <iostream>
 
+#include "acst_common/cli.hpp"
 #include "acst_calibration/cli.hpp"
 
 int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);
-  return acst::calibration::fit_cli(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+  return acst::calibration::fit_cli(acst::common::arguments(argc, argv), std::cout, std::cerr);
 }

@@ -10,7 +10,7 @@
 #include "acst/material.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/record.hpp"
-#include "parallel_for.hpp"
+#include "acst_common/parallel_for.hpp"
 
 namespace acst::calibration {
 
@@ -68,8 +68,8 @@ json scene_json(const FitSpec& spec, const ExperimentSpec& x, const std::string&
 driver::Scene build_scene(const json& j, const ExperimentSpec& x, const std::string& name) {
   try {
     return driver::parse_scene(j.dump(), "", name);
-  } catch (const driver::SceneError& e) {
-    throw FitError(x.path + ": the element test built from this experiment is invalid: " + e.what());
+  } catch (const common::InputError& e) {
+    throw common::InputError(x.path + ": the element test built from this experiment is invalid: " + e.what());
   }
 }
 
@@ -123,7 +123,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
         phi.x.push_back(static_cast<double>(i));
         phi.measured.push_back(measured[i]);
       }
-      if (phi.x.empty()) throw FitError(x.path + "/rows: no row of '" + x.data_file + "' is selected");
+      if (phi.x.empty()) throw common::InputError(x.path + "/rows: no row of '" + x.data_file + "' is selected");
       phi.scale = series_scale(phi.measured, phi.axis);
       phi.point_weight = w / static_cast<double>(phi.x.size());
       series_[k].push_back(phi);
@@ -133,14 +133,14 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
         Series s;
         s.axis = axis;
         const auto v = lab.column(column);
-        if (v.empty()) throw FitError(x.path + "/data: '" + x.data_file + "' has no column " + column + " (set \"fit\" to leave that axis out)");
+        if (v.empty()) throw common::InputError(x.path + "/data: '" + x.data_file + "' has no column " + column + " (set \"fit\" to leave that axis out)");
         for (std::size_t i = 0; i < v.size(); ++i)
           if (!std::isnan(v[i]) && eps_a[i] > 0.0 && eps_a[i] >= x.strain_lo_pct && eps_a[i] <= x.strain_hi_pct) {
             s.x.push_back(eps_a[i]);
             s.measured.push_back(v[i]);
           }
         if (s.x.empty())
-          throw FitError(x.path + "/strain_range_pct: no " + column + " point of '" + x.data_file + "' lies in [" +
+          throw common::InputError(x.path + "/strain_range_pct: no " + column + " point of '" + x.data_file + "' lies in [" +
                          std::to_string(x.strain_lo_pct) + ", " + std::to_string(x.strain_hi_pct) + "] %");
         s.scale = series_scale(s.measured, axis == "stress" && x.stress_measure == StressMeasure::q_kPa ? "stress_q" : axis);
         s.point_weight = w * axis_weight / static_cast<double>(s.x.size());
@@ -148,7 +148,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       };
       const double sa = spec.stress_axis_weight, va = spec.volumetric_axis_weight;
       const double share = (x.fit_stress ? sa : 0.0) + (x.fit_volumetric ? va : 0.0);
-      if (!(share > 0.0)) throw FitError(x.path + "/fit: the axes this experiment fits have zero weight (/weights/axes)");
+      if (!(share > 0.0)) throw common::InputError(x.path + "/fit: the axes this experiment fits have zero weight (/weights/axes)");
       if (x.fit_stress) collect(x.stress_measure == StressMeasure::q_kPa ? "q_kPa" : "stress_ratio", "stress", sa / share);
       if (x.fit_volumetric) collect("eps_v_pct", "volumetric", va / share);
       // Run a little past the last point so that it is interpolated, not extrapolated.
@@ -264,10 +264,13 @@ std::vector<Eigen::VectorXd> Problem::residuals(const std::vector<Eigen::VectorX
   const std::size_t ns = simulations_.size();
   std::vector<SimulationOutcome> outcomes(thetas.size() * ns);
   // Longest runs first over all points, so that the threads finish together.
-  parallel_for(outcomes.size(), threads_, [&](std::size_t job) {
-    const std::size_t point = job % thetas.size(), sim = schedule_[job / thetas.size()];
-    outcomes[point * ns + sim] = simulate(simulations_[sim], thetas[point], false);
-  });
+  common::parallel_for(
+      threads_, outcomes.size(),
+      [&](int, std::size_t job) {
+        const std::size_t point = job % thetas.size(), sim = schedule_[job / thetas.size()];
+        outcomes[point * ns + sim] = simulate(simulations_[sim], thetas[point], false);
+      },
+      common::Schedule::dynamic);
   std::vector<Eigen::VectorXd> r(thetas.size());
   std::vector<const SimulationOutcome*> view(ns);
   for (std::size_t point = 0; point < thetas.size(); ++point) {
@@ -279,9 +282,10 @@ std::vector<Eigen::VectorXd> Problem::residuals(const std::vector<Eigen::VectorX
 
 Eigen::VectorXd Problem::residuals(const Eigen::VectorXd& theta, std::vector<SimulationOutcome>& outcomes) const {
   outcomes.assign(simulations_.size(), {});
-  parallel_for(schedule_.size(), threads_, [&](std::size_t job) {
-    outcomes[schedule_[job]] = simulate(simulations_[schedule_[job]], theta, true);
-  });
+  common::parallel_for(
+      threads_, schedule_.size(),
+      [&](int, std::size_t job) { outcomes[schedule_[job]] = simulate(simulations_[schedule_[job]], theta, true); },
+      common::Schedule::dynamic);
   std::vector<const SimulationOutcome*> view;
   for (const auto& o : outcomes) view.push_back(&o);
   Eigen::VectorXd r;

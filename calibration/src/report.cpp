@@ -61,12 +61,12 @@ std::string panel(const Problem& problem, std::size_t k, const Series& s, std::s
   return g.str();
 }
 
-void write_text(const fs::path& p, const std::string& text) { driver::write_file_atomically(p.string(), text); }
+void write_text(const fs::path& p, const std::string& text) { common::write_file_atomically(p.string(), text); }
 
-// Runs gnuplot on `script` inside `dir`; returns a warning or "".
-std::string run_gnuplot(const fs::path& dir, const std::string& script) {
-  const std::string cmd = "cd " + driver::shell_quoted(dir.string()) + " && gnuplot " + driver::shell_quoted(script) + " >/dev/null 2>&1";
-  return std::system(cmd.c_str()) == 0 ? "" : "gnuplot failed on " + (dir / script).string();
+// Runs gnuplot on `script` inside `dir` (its plots name their files relative to it).
+std::string run_gnuplot_in(const fs::path& dir, const std::string& script) {
+  const std::string w = common::run_gnuplot_command(dir.string(), common::shell_quoted(script));
+  return w.empty() ? "" : (dir / script).string() + ": " + w;
 }
 
 }  // namespace
@@ -358,17 +358,17 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
                                         " font ',8'\nset output '" + spec.name + "_overview.png.tmp'\nset datafile separator ','\n"
                                         "set key top left\nset grid\nset multiplot layout " + std::to_string(rows) + "," +
                                         std::to_string(columns) + "\n" + overview + "unset multiplot\nset output\n");
-    if (plot && !driver::gnuplot_available()) {
+    if (plot && !common::gnuplot_available()) {
       warnings.push_back("gnuplot not found: no PNG figures (the CSV and .gp files are written)");
     } else if (plot) {
       std::vector<fs::path> pngs;
       for (const ExperimentSpec& x : spec.experiments) {
-        const std::string w = run_gnuplot(scratch / "curves", x.id + ".gp");
+        const std::string w = run_gnuplot_in(scratch / "curves", x.id + ".gp");
         if (w.empty()) fs::rename(scratch / "curves" / (x.id + ".png.tmp"), scratch / "curves" / (x.id + ".png"));
         if (w.empty()) pngs.push_back(fs::path("curves") / (x.id + ".png"));
         else warnings.push_back(w);
       }
-      const std::string w = run_gnuplot(scratch, spec.name + "_overview.gp");
+      const std::string w = run_gnuplot_in(scratch, spec.name + "_overview.gp");
       if (w.empty()) {
         fs::rename(scratch / (spec.name + "_overview.png.tmp"), scratch / (spec.name + "_overview.png"));
         pngs.push_back(spec.name + "_overview.png");

@@ -6,8 +6,12 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <unistd.h>
+#include <sstream>
 
+#include "acst_common/cli.hpp"
+#include "acst_common/duration.hpp"
+#include "acst_common/files.hpp"
+#include "acst_common/progress.hpp"
 #include "acst_driver/output.hpp"
 #include "acst_driver/runner.hpp"
 #include "acst_driver/scene.hpp"
@@ -65,62 +69,43 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
-std::string seconds_text(double s) {
-  char buf[32];
-  if (s < 60)
-    std::snprintf(buf, sizeof buf, "%.1f s", s);
-  else
-    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s / 60), static_cast<int>(s) % 60);
-  return buf;
-}
-
-// Progress on stderr: a line rewritten in place on a terminal, one line per scene otherwise.
+// The batch's progress: scene i/n, increments done, rate and time left; one line per finished
+// scene when there are several.
 class Progress {
  public:
   Progress(std::ostream& err, bool enabled, int scenes, long planned)
-      : err_(err), enabled_(enabled), tty_(::isatty(2) == 1 && &err == &std::cerr), scenes_(scenes), planned_(planned),
-        start_(Clock::now()), last_(start_) {}
+      : line_(err, enabled), scenes_(scenes), planned_(planned) {}
 
   void update(int index, const std::string& name, long done) {
-    if (!enabled_ || !tty_) return;
-    const auto now = Clock::now();
-    if (now - last_ < std::chrono::milliseconds(200)) return;
-    last_ = now;
-    err_ << '\r' << line(index, name, done_before_ + done) << "\033[K" << std::flush;
+    if (line_.on_terminal() && line_.due()) line_.show(text(index, name, done_before_ + done));
   }
 
   void finished(int index, const std::string& name, long increments, bool ok, double seconds) {
     done_before_ += increments;
-    if (!enabled_) return;
-    if (scenes_ == 1 && !tty_) return;
-    if (tty_) err_ << '\r';
-    err_ << line(index + 1, name, done_before_) << " (" << name << " " << (ok ? "done" : "FAILED") << " in "
-         << seconds_text(seconds) << ")" << (tty_ ? "\033[K" : "") << "\n"
-         << std::flush;
+    if (scenes_ == 1 && !line_.on_terminal()) return;
+    line_.finish(text(index + 1, name, done_before_) + " (" + name + " " + (ok ? "done" : "FAILED") + " in " +
+                 common::duration_text(seconds) + ")");
   }
 
-  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  double elapsed() const { return line_.elapsed_s(); }
 
  private:
-  std::string line(int index, const std::string& name, long done) const {
+  std::string text(int index, const std::string& name, long done) const {
     const double t = elapsed();
     const double rate = t > 0 ? done / t : 0.0;
     std::string s = "[" + std::to_string(std::min(index + (index < scenes_ ? 1 : 0), scenes_)) + "/" +
                     std::to_string(scenes_) + "] ";
     if (index < scenes_) s += name + " ";
+    const double fraction = planned_ > 0 ? static_cast<double>(done) / planned_ : 1.0;
     char buf[160];
-    const double left = rate > 0 ? (planned_ - done) / rate : 0.0;
-    std::snprintf(buf, sizeof buf, "%.0f%% of %ld increments, %.0f increments/s, %s elapsed, ~%s left",
-                  planned_ > 0 ? 100.0 * done / planned_ : 100.0, planned_, rate, seconds_text(t).c_str(),
-                  seconds_text(std::max(0.0, left)).c_str());
-    return s + buf;
+    std::snprintf(buf, sizeof buf, "%.0f%% of %ld increments, %.0f increments/s, %s elapsed, ", 100.0 * fraction,
+                  planned_, rate, common::duration_text(t).c_str());
+    return s + buf + common::ProgressLine::time_left(t, fraction);
   }
 
-  std::ostream& err_;
-  bool enabled_, tty_;
+  common::ProgressLine line_;
   int scenes_;
   long planned_, done_before_ = 0;
-  Clock::time_point start_, last_;
 };
 
 struct Outcome {
@@ -155,38 +140,16 @@ void print_summary(std::ostream& out, const std::vector<Outcome>& outcomes) {
 }  // namespace
 
 int element_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  bool quiet = false, plot = true;
-  std::string output_dir;
-  std::vector<std::string> files;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      usage(out);
-      return 0;
-    } else if (a == "--quiet" || a == "-q") {
-      quiet = true;
-    } else if (a == "--no-plot") {
-      plot = false;
-    } else if (a == "--output" || a == "-o") {
-      if (i + 1 >= args.size()) {
-        err << "acst_element: --output needs a directory\n";
-        return 2;
-      }
-      output_dir = args[++i];
-    } else if (a.rfind("--output=", 0) == 0) {
-      output_dir = a.substr(9);
-    } else if (a.size() > 1 && a[0] == '-') {
-      err << "acst_element: unknown option '" << a << "' (see --help)\n";
-      return 2;
-    } else {
-      files.push_back(a);
-    }
-  }
-  if (files.empty()) {
-    err << "acst_element: no scene file given\n";
-    usage(err);
-    return 2;
-  }
+  std::ostringstream help;
+  usage(help);
+  common::CliSpec spec("acst_element", "scene file");
+  spec.many_inputs = true;
+  common::CliArgs cli;
+  const int early = common::parse_command_line(spec, args, help.str(), out, err, cli);
+  if (early >= 0) return early;
+  const bool quiet = cli.quiet, plot = cli.plot;
+  const std::string& output_dir = cli.output;
+  const std::vector<std::string>& files = cli.inputs;
   // Read and validate everything first: an invalid scene means nothing is written.
   std::vector<Scene> scenes;
   int invalid = 0;
@@ -234,7 +197,7 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
       const fs::path base = fs::absolute(dir / s.output.name);
       if (r.ok) {
         o.csv = base.string() + ".csv";
-        write_file_atomically(o.csv, csv_text(s, r));
+        common::write_file_atomically(o.csv, csv_text(s, r));
         if (s.output.plot) {
           const std::string w = write_figure(s, r, o.csv, base.string() + ".png", base.string() + ".gp");
           if (!w.empty()) err << s.source << ": warning: " << w << "\n";
@@ -242,9 +205,9 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
       } else {
         ++failed;
         err << s.source << ": run failed: " << r.message << "\n";
-        write_file_atomically(base.string() + ".failed.csv", csv_text(s, r));
+        common::write_file_atomically(base.string() + ".failed.csv", csv_text(s, r));
         if (r.reproducer) {
-          write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
+          common::write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
           err << s.source << ": wrote " << base.string() << ".reproducer.json (replays the failing increment) and "
               << base.string() << ".failed.csv (the rows up to it)\n";
         }
@@ -266,7 +229,7 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
   }
   if (!quiet) {
     print_summary(out, outcomes);
-    out << "\n" << scenes.size() - failed << " of " << scenes.size() << " scenes ran in " << seconds_text(progress.elapsed())
+    out << "\n" << scenes.size() - failed << " of " << scenes.size() << " scenes ran in " << common::duration_text(progress.elapsed())
         << "; results in " << (output_dir.empty() ? "each scene's output directory" : output_dir) << "\n";
   }
   return failed > 0 ? 1 : 0;

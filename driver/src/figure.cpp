@@ -99,7 +99,7 @@ std::string log_ticks(double lo, double hi) {
 
 std::string write_figure(const Scene& scene, const RunResult& result, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path) {
-  if (!gnuplot_available()) return "gnuplot was not found on PATH: no PNG written (the CSV is complete)";
+  if (!common::gnuplot_available()) return "gnuplot was not found on PATH: no PNG written (the CSV is complete)";
   const Parameters& par = scene.material->parameters();
   std::vector<LabBlocks> labs;
   for (const auto& file : scene.lab_data) {
@@ -113,7 +113,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
   gp << "# gnuplot script written by acst_element for " << scene.output.name << "\n";
   gp << "set terminal pngcairo size 1400,1000 font 'DejaVu Sans,11' noenhanced\n";
   gp << "# run as: gnuplot " << std::filesystem::path(gp_path).filename().string() << " (or gnuplot -e \"png='other.png'\" ...)\n";
-  gp << "if (!exists('png')) png = " << gp_quoted(png_path) << "\n";
+  gp << "if (!exists('png')) png = " << common::gp_quoted(png_path) << "\n";
   gp << "set output png\n";
   gp << "set datafile separator ','\nset datafile columnheaders\n";
   for (std::size_t k = 0; k < labs.size(); ++k) {
@@ -125,7 +125,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
     block("pq", labs[k].pq);
     block("elogp", labs[k].elogp);
   }
-  const std::string data = gp_quoted(csv_path);
+  const std::string data = common::gp_quoted(csv_path);
   // Ranges of p and q from the data, so the reference lines do not stretch the axes.
   double p_lo = INFINITY, p_hi = -INFINITY, q_lo = 0.0, q_hi = 0.0;
   for (const Record& r : result.records) {
@@ -173,7 +173,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
   std::snprintf(title, sizeof title, "%s: %s model, e0 = %.3f, p0 = %.4g kPa, bedding angle %.3g deg (b = [%.3g, %.3g, %.3g])",
                 scene.output.name.c_str(), par.variant == Variant::isotropic ? "isotropic" : "ACST",
                 scene.initial.void_ratio, trace(scene.initial.stress) / 3.0, scene.initial.bedding_angle_deg, b[0], b[1], b[2]);
-  gp << "set multiplot layout 2,2 title " << gp_quoted(title) << "\n";
+  gp << "set multiplot layout 2,2 title " << common::gp_quoted(title) << "\n";
   gp << "set grid\nset key top left box opaque\nset style data lines\n";
   gp << "sim = 'simulation (" << (par.variant == Variant::isotropic ? "isotropic" : "ACST") << ")'\n";
   const char* point_styles[] = {"pt 7 ps 0.9 lc rgb '#d62728'", "pt 5 ps 0.9 lc rgb '#2ca02c'", "pt 9 ps 1.0 lc rgb '#ff7f0e'",
@@ -182,7 +182,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
     std::string s;
     for (std::size_t k = 0; k < labs.size(); ++k)
       s += ", $lab" + std::to_string(k) + "_" + block + " using 1:2 with points " + point_styles[k % 5] + " title " +
-           gp_quoted(labs[k].title + (labs[k].plane_strain && std::string(block) == "q" ? " (sigma_1 - sigma_3)" : ""));
+           common::gp_quoted(labs[k].title + (labs[k].plane_strain && std::string(block) == "q" ? " (sigma_1 - sigma_3)" : ""));
     return s;
   };
   gp << "set xlabel 'axial strain eps_a [%]'\nset ylabel 'q [kPa]'\nset key bottom right\n";
@@ -214,7 +214,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
   if (q_lo < 0.0) gp << ", " << -par.c * par.Mc << " * x dt 3 lc rgb 'gray60' title 'q = -c Mc p'";
   gp << lab_plots("pq") << "\n";
   gp << "unset multiplot\nset output\n";
-  return run_gnuplot(gp.str(), gp_path, png_path);
+  return common::run_gnuplot(gp.str(), gp_path, png_path);
 }
 
 }  // namespace acst::driver

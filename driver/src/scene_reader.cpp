@@ -7,44 +7,21 @@
 #include <sstream>
 
 #include "acst/fabric.hpp"
+#include "acst_common/files.hpp"
 #include "acst/json_input.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/presets.hpp"
+#include "acst_driver/material_object.hpp"
 #include "acst_driver/scene.hpp"
-#include "acst_driver/json_fields.hpp"
+#include "acst_common/json_fields.hpp"
 #include "step_reader.hpp"
 
 namespace acst::driver {
 
 using nlohmann::json;
-namespace f = fields;
+namespace f = common::fields;
 
 namespace {
-
-std::string resolve(const std::string& base_dir, const std::string& name) {
-  const std::filesystem::path p(name);
-  return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
-}
-
-json parse_json(const std::string& text, const std::string& path, const std::string& what) {
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string msg = e.what();
-    const auto bracket = msg.find("] ");
-    if (msg.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) msg = msg.substr(bracket + 2);
-    f::fail(path, what + " is not valid JSON: " + msg);
-  }
-}
-
-bool read_file(const std::string& file, std::string& text) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
-  std::stringstream ss;
-  ss << in.rdbuf();
-  text = ss.str();
-  return true;
-}
 
 // Prefixes the material library's own messages (which start with their JSON path) with ours.
 template <class Fn>
@@ -53,37 +30,16 @@ auto with_prefix(const std::string& prefix, Fn&& fn) -> decltype(fn()) {
     return fn();
   } catch (const InputError& e) {
     const std::string m = e.what();
-    throw SceneError(m.rfind('/', 0) == 0 ? prefix + m : prefix + ": " + m);
+    throw common::InputError(m.rfind('/', 0) == 0 ? prefix + m : prefix + ": " + m);
   }
 }
 
 // "material": {"file": "...", "integrator": {...}} or {"model", "parameters", "integrator"}.
 void read_material(const json& j, const std::string& path, const std::string& base_dir, Scene& scene) {
-  f::object(j, path);
-  json effective;
-  std::string prefix = path;
-  if (j.contains("file")) {
-    f::allow_keys(j, {"file", "integrator"}, path);
-    const std::string name = f::string(j["file"], path + "/file");
-    const std::string file = resolve(base_dir, name);
-    std::string text;
-    if (!read_file(file, text)) f::fail(path + "/file", "cannot read the material file '" + file + "'");
-    effective = parse_json(text, path + "/file", "the material file '" + file + "'");
-    f::object(effective, path + "/file (" + file + ")");
-    prefix = path + "/file (" + file + ")";
-    scene.material_source = name;
-    if (j.contains("integrator")) {
-      f::object(j["integrator"], path + "/integrator");
-      if (!effective.contains("integrator")) effective["integrator"] = json::object();
-      f::object(effective["integrator"], prefix + "/integrator");
-      for (const auto& item : j["integrator"].items()) effective["integrator"][item.key()] = item.value();
-    }
-  } else {
-    f::allow_keys(j, {"model", "parameters", "integrator"}, path);
-    effective = j;
-    scene.material_source = "inline";
-  }
-  f::allow_keys(effective, {"model", "parameters", "integrator"}, prefix);
+  const MaterialObject m = read_material_object(j, path, base_dir);
+  const json& effective = m.object;
+  const std::string& prefix = m.path;
+  scene.material_source = m.source;
   if (!effective.contains("parameters")) f::fail(prefix + "/parameters", "required object is missing");
   const Variant variant = effective.contains("model")
       ? with_prefix(prefix, [&] { return variant_from_json(effective["model"], "/model"); })
@@ -186,7 +142,7 @@ void read_lab_data(const json& j, const std::string& path, const std::string& ba
     f::fail(path, std::string("expected a file name or an array of file names, got ") + j.type_name());
   }
   for (const auto& [p, name] : names) {
-    const std::string file = resolve(base_dir, name);
+    const std::string file = common::resolve(base_dir, name);
     try {
       read_lab_curve(file);
     } catch (const std::exception& e) {
@@ -226,7 +182,7 @@ void check_rows_complete(const ControlRows& rows, const Material& material, cons
 }
 
 Scene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
-  const json j = parse_json(text, "", "the scene");
+  const json j = f::parse(text, "", "the scene");
   f::allow_keys(j, {"description", "material", "initial_state", "steps", "solver", "lab_data", "output"}, "");
   for (const char* key : {"material", "initial_state", "steps"})
     if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
@@ -249,10 +205,10 @@ Scene parse_scene(const std::string& text, const std::string& base_dir, const st
 }
 
 Scene read_scene(const std::string& path) {
-  std::string text;
-  if (!read_file(path, text)) throw SceneError("cannot read the scene file '" + path + "'");
+  const std::optional<std::string> text = common::read_file(path);
+  if (!text) throw common::InputError("cannot read the scene file '" + path + "'");
   const std::filesystem::path p(path);
-  Scene s = parse_scene(text, p.parent_path().string(), p.stem().string());
+  Scene s = parse_scene(*text, p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

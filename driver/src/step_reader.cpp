@@ -1,16 +1,17 @@
 #include "step_reader.hpp"
+#include "acst_common/files.hpp"
 
 #include <filesystem>
 
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/presets.hpp"
-#include "acst_driver/json_fields.hpp"
+#include "acst_common/json_fields.hpp"
 #include "units.hpp"
 
 namespace acst::driver {
 
 using nlohmann::json;
-namespace f = fields;
+namespace f = common::fields;
 
 namespace {
 
@@ -184,11 +185,6 @@ std::vector<Segment> read_strain_path(const std::string& file, const std::string
   return segments;
 }
 
-std::string resolve(const std::string& base_dir, const std::string& name) {
-  const std::filesystem::path p(name);
-  return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
-}
-
 int read_increments(const json& j, const std::string& path) {
   if (!j.contains("increments")) f::fail(path + "/increments", "required: the number of increments of the step (>= 1)");
   return static_cast<int>(f::integer(j["increments"], path + "/increments", 1, max_increments));
@@ -264,7 +260,7 @@ Step read_preset_step(const json& j, const std::string& path, const std::string&
   } else if (k == "strain_path_csv") {
     keys({"file", "increments_per_row"});
     if (j.contains("increments")) f::fail(p + "increments", "not used by strain_path_csv (use increments_per_row)");
-    const std::string file = resolve(base_dir, f::string(required("file"), p + "file"));
+    const std::string file = common::resolve(base_dir, f::string(required("file"), p + "file"));
     const int per_row = j.contains("increments_per_row")
                             ? static_cast<int>(f::integer(j["increments_per_row"], p + "increments_per_row", 1, max_increments))
                             : 1;

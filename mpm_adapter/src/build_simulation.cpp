@@ -63,7 +63,7 @@ Simulation build_simulation(const Scene& s) {
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const BodySpec& b = s.bodies[i];
     if (b.particles_per_cell != ppc)
-      throw SceneError("/bodies/" + std::to_string(i) + "/particles_per_cell: all bodies must use the same number (B2GIMP's uniform particle domains)");
+      throw common::InputError("/bodies/" + std::to_string(i) + "/particles_per_cell: all bodies must use the same number (B2GIMP's uniform particle domains)");
     const long long cells = std::llround((b.x_max - b.x_min) / h) * std::llround((b.y_max - b.y_min) / h);
     count += static_cast<std::size_t>(cells) * ppc * ppc;
     state_size = std::max<std::size_t>(state_size, materials[index[b.material]]->state_size());
@@ -77,7 +77,7 @@ Simulation build_simulation(const Scene& s) {
     sim.footing.speed = s.footing->speed;
     sim.footing.inclination = s.footing->inclination_deg * pi / 180.0;
     sim.footing.rough = s.footing->rough;
-    if (!std::isfinite(sim.footing.base_y)) throw SceneError("/footing/centre_x: no body lies under the footing");
+    if (!std::isfinite(sim.footing.base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
   }
 
   Particles& P = sim.particles;
@@ -91,11 +91,11 @@ Simulation build_simulation(const Scene& s) {
     double e = 0.0, deposition[3] = {0.0, 1.0, 0.0};
     if (mat.is_sand()) {
       if (!b.void_ratio && !b.relative_density)
-        throw SceneError(path + ": a sand material needs void_ratio or relative_density_pct");
+        throw common::InputError(path + ": a sand material needs void_ratio or relative_density_pct");
       e = b.void_ratio ? *b.void_ratio : mat.void_ratio_from_relative_density(*b.relative_density);
       // b = (-sin alpha, cos alpha, 0): alpha from the vertical (loading) axis, as in the reference study.
       const acst_status st = acst_bedding_direction(deposition, b.bedding_angle_deg, 1, 0, -1.0);
-      if (st.code != ACST_OK) throw SceneError(path + "/bedding_angle_deg: " + st.message);
+      if (st.code != ACST_OK) throw common::InputError(path + "/bedding_angle_deg: " + st.message);
     }
     const long long ncx = std::llround((b.x_max - b.x_min) / d), ncy = std::llround((b.y_max - b.y_min) / d);
     for (long long jy = 0; jy < ncy; ++jy)
@@ -117,7 +117,7 @@ Simulation build_simulation(const Scene& s) {
         try {
           mat.initial_state(P.statev.data() + P.state_size * p, sig, e, deposition);
         } catch (const MaterialError& err) {
-          throw SceneError(path + ": particle at (" + std::to_string(x) + ", " + std::to_string(y) + "): " + err.what());
+          throw common::InputError(path + ": particle at (" + std::to_string(x) + ", " + std::to_string(y) + "): " + err.what());
         }
         const bool top_row = y + d > column_top(s, x) - 1e-9 * h;
         const bool under_footing = s.footing && std::fabs(x - s.footing->centre_x) < 0.5 * s.footing->width;

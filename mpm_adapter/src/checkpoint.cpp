@@ -5,7 +5,8 @@
 #include <sstream>
 #include <type_traits>
 
-#include "acst_driver/files.hpp"
+#include "acst_common/files.hpp"
+#include "acst_common/gnuplot.hpp"
 
 namespace acst::mpm {
 namespace {
@@ -102,15 +103,13 @@ void write_checkpoint(const std::string& path, const Scene& scene, const Simulat
   w.pod<std::uint64_t>(sim.particles.n);
   particle_arrays(sim.particles, [&](const auto& v) { w.vec(v); });
   run_fields(w, sim, state);
-  acst::driver::write_file_atomically(path, w.out);
+  acst::common::write_file_atomically(path, w.out);
 }
 
 void read_checkpoint(const std::string& path, const Scene& scene, Simulation& sim, RunState& state) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw SimulationError("cannot open checkpoint '" + path + "'");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  const std::string data = ss.str();
+  const std::optional<std::string> text = common::read_file(path);
+  if (!text) throw SimulationError("cannot open checkpoint '" + path + "'");
+  const std::string& data = *text;
   Reader r{data, 0, path};
   r.need(sizeof magic);
   if (std::memcmp(data.data(), magic, sizeof magic) != 0) throw SimulationError("'" + path + "' is not an acst_mpm checkpoint");

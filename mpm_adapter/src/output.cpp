@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <sstream>
 
-#include "acst_driver/files.hpp"
+#include "acst_common/files.hpp"
+#include "acst_common/gnuplot.hpp"
 #include "acst_mpm/fields.hpp"
 
 namespace acst::mpm {
 namespace fs = std::filesystem;
-using acst::driver::gp_quoted;
 
 namespace {
 
@@ -106,14 +106,14 @@ std::string write_load_figure(const Scene& scene, const std::string& dir, const 
      << "if (!exists('png')) png = 'load_settlement.png'\nset output png\n"
      << "set datafile separator ','\nset datafile commentschars '#'\nset datafile columnheaders\n"
      << "set xlabel 'S/B'\nset ylabel 'q = V/B [kPa]'\nset grid\nset key top right\n"
-     << "set title " << gp_quoted("Strip footing: " + scene.name) << "\n"
-     << "plot " << gp_quoted(fs::absolute(fs::path(dir) / csv_file).string()) << " using 'S_over_B':'q_kPa' with lines lw 2 lc rgb '#1f3f9f' title 'MPM (ACST C ABI)'";
+     << "set title " << common::gp_quoted("Strip footing: " + scene.name) << "\n"
+     << "plot " << common::gp_quoted(fs::absolute(fs::path(dir) / csv_file).string()) << " using 'S_over_B':'q_kPa' with lines lw 2 lc rgb '#1f3f9f' title 'MPM (ACST C ABI)'";
   if (!scene.output.lab_curve.empty())
-    gp << ", " << gp_quoted(fs::absolute(scene.output.lab_curve).string())
+    gp << ", " << common::gp_quoted(fs::absolute(scene.output.lab_curve).string())
        << " using 'S_over_B':'q_kPa' with points pt 7 ps 0.5 lc rgb '#c03020' title "
-       << gp_quoted(scene.output.lab_label.empty() ? "lab data" : scene.output.lab_label);
+       << common::gp_quoted(scene.output.lab_label.empty() ? "lab data" : scene.output.lab_label);
   gp << "\n";
-  return acst::driver::run_gnuplot(gp.str(), (fs::path(dir) / "load_settlement.gp").string(),
+  return acst::common::run_gnuplot(gp.str(), (fs::path(dir) / "load_settlement.gp").string(),
                                    (fs::path(dir) / "load_settlement.png").string());
 }
 
@@ -127,7 +127,7 @@ std::string write_contour_figure(const std::string& dir, const std::string& stem
   }
   const std::string csv = (fs::path(dir) / (stem + ".csv")).string();
   try {
-    acst::driver::write_file_atomically(csv, data);
+    acst::common::write_file_atomically(csv, data);
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -139,14 +139,14 @@ std::string write_contour_figure(const std::string& dir, const std::string& stem
   }
   std::ostringstream gp;
   gp << "set terminal pngcairo size 1400,800 font 'DejaVu Sans,12' noenhanced\n"
-     << "if (!exists('png')) png = " << gp_quoted(stem + ".png") << "\nset output png\n"
+     << "if (!exists('png')) png = " << common::gp_quoted(stem + ".png") << "\nset output png\n"
      << "set datafile separator ','\nset datafile columnheaders\nset size ratio -1\n"
-     << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset cblabel " << gp_quoted(label) << "\n"
-     << "set title " << gp_quoted(title) << "\nset palette rgb 33,13,10\n";
+     << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset cblabel " << common::gp_quoted(label) << "\n"
+     << "set title " << common::gp_quoted(title) << "\nset palette rgb 33,13,10\n";
   if (cap > 0.0) gp << "set cbrange [0:" << cap << "]\n";
-  gp << "d = " << 0.5 * cell << "\nplot " << gp_quoted(fs::absolute(csv).string())
+  gp << "d = " << 0.5 * cell << "\nplot " << common::gp_quoted(fs::absolute(csv).string())
      << " using 1:2:($1-d):($1+d):($2-d):($2+d):3 with boxxyerror fs solid noborder fc palette notitle\n";
-  return acst::driver::run_gnuplot(gp.str(), (fs::path(dir) / (stem + ".gp")).string(),
+  return acst::common::run_gnuplot(gp.str(), (fs::path(dir) / (stem + ".gp")).string(),
                                    (fs::path(dir) / (stem + ".png")).string());
 }
 

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
+#include <iostream>
+#include <nlohmann/json.hpp>
 
-#include "acst_driver/files.hpp"
+#include "acst_common/files.hpp"
+#include "acst_common/gnuplot.hpp"
+#include "acst_common/progress.hpp"
 #include "acst_mpm/checkpoint.hpp"
 #include "acst_mpm/fields.hpp"
 #include "acst_mpm/output.hpp"
@@ -14,20 +17,10 @@
 
 namespace acst::mpm {
 namespace fs = std::filesystem;
-using acst::driver::write_file_atomically;
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string duration_text(double s) {
-  char buf[32];
-  if (!std::isfinite(s) || s < 0) return "?";
-  if (s < 120) std::snprintf(buf, sizeof buf, "%.0fs", s);
-  else if (s < 7200) std::snprintf(buf, sizeof buf, "%.0fm%02.0fs", std::floor(s / 60), std::fmod(s, 60));
-  else std::snprintf(buf, sizeof buf, "%.1fh", s / 3600);
-  return buf;
-}
 
 class Run {
  public:
@@ -43,7 +36,7 @@ class Run {
   RunSummary run() {
     fs::create_directories(opt_.output_dir);
     const auto start = Clock::now();
-    auto last_print = start, last_checkpoint = start;
+    auto last_checkpoint = start;
     const long long first_step = sim_.step_count;
     if (st_.vtk_frames == 0) write_frame();
     try {
@@ -53,10 +46,7 @@ class Run {
         if (due_frame()) write_frame();
         contours_at_requested();
         const auto now = Clock::now();
-        if (!opt_.quiet && now - last_print > std::chrono::seconds(1)) {
-          progress(std::chrono::duration<double>(now - start).count(), sim_.step_count - first_step);
-          last_print = now;
-        }
+        if (progress_.due()) show_progress(sim_.step_count - first_step);
         if (scene_.output.checkpoint_every_s > 0 &&
             std::chrono::duration<double>(now - last_checkpoint).count() > scene_.output.checkpoint_every_s) {
           checkpoint();
@@ -64,12 +54,12 @@ class Run {
         }
       }
     } catch (const SimulationError&) {
-      if (!opt_.quiet) std::fprintf(stderr, "\n");
-      write_file_atomically(path("load_settlement.failed.csv"), load_csv_text(scene_, rows()));
+      progress_.close();
+      common::write_file_atomically(path("load_settlement.failed.csv"), load_csv_text(scene_, rows()));
       throw;
     }
     if (st_.period_steps > 0) close_period();
-    if (!opt_.quiet) std::fprintf(stderr, "\n");
+    progress_.close();
     RunSummary sum;
     sum.steps = sim_.step_count - first_step;
     sum.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
@@ -84,6 +74,7 @@ class Run {
   Simulation sim_;
   RunState st_;
   double B_ = 1.0;
+  common::ProgressLine progress_{std::cerr, !opt_.quiet, 0.2, 1.0};
 
   std::string path(const std::string& name) const { return (fs::path(opt_.output_dir) / name).string(); }
   double settlement() const { return -sim_.footing_dy; }
@@ -157,10 +148,10 @@ class Run {
   void write_frame() {
     char name[64];
     std::snprintf(name, sizeof name, "particles_%04d.vtp", st_.vtk_frames);
-    write_file_atomically(path(name), vtp_text(sim_));
+    common::write_file_atomically(path(name), vtp_text(sim_));
     st_.vtk_times.push_back(sim_.time);
     ++st_.vtk_frames;
-    write_file_atomically(path("particles.pvd"), pvd_text("particles", st_.vtk_times));
+    common::write_file_atomically(path("particles.pvd"), pvd_text("particles", st_.vtk_times));
   }
 
   void contours_at_requested() {
@@ -187,23 +178,22 @@ class Run {
       if (!w.empty()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   }
 
-  void progress(double wall, long long steps) {
-    const double rate = steps / std::max(wall, 1e-9), frac = progress_fraction();
-    const double left = frac > 0 ? wall * (1.0 - frac) / frac : NAN;
+  void show_progress(long long steps) {
+    const double wall = progress_.elapsed_s(), rate = steps / std::max(wall, 1e-9);
     const double q = st_.history.empty() ? 0.0 : st_.history.back().q_kPa;
-    std::fprintf(stderr, "\r%s: step %lld  t %.3f s  S/B %.4f  q %.1f kPa  %.0f steps/s  left %s   ", scene_.name.c_str(),
-                 sim_.step_count, sim_.time, S_over_B(), q, rate, duration_text(left).c_str());
-    if (!isatty(fileno(stderr))) std::fprintf(stderr, "\n");
-    std::fflush(stderr);
+    char text[256];
+    std::snprintf(text, sizeof text, "%s: step %lld  t %.3f s  S/B %.4f  q %.1f kPa  %.0f steps/s  ", scene_.name.c_str(),
+                  sim_.step_count, sim_.time, S_over_B(), q, rate);
+    progress_.show(text + common::ProgressLine::time_left(wall, progress_fraction()));
   }
 
   void checkpoint() {
     write_checkpoint(path("checkpoint.bin"), scene_, sim_, st_);
-    write_file_atomically(path("load_settlement.partial.csv"), load_csv_text(scene_, rows()));
+    common::write_file_atomically(path("load_settlement.partial.csv"), load_csv_text(scene_, rows()));
   }
 
   void write_results(RunSummary& sum) {
-    write_file_atomically(path("load_settlement.csv"), load_csv_text(scene_, rows()));
+    common::write_file_atomically(path("load_settlement.csv"), load_csv_text(scene_, rows()));
     std::remove(path("load_settlement.partial.csv").c_str());
     if (!st_.history.empty()) sum.residual_V = st_.history.back().V_kN_per_m;
     sum.Q_ult = st_.peak.V_kN_per_m;
@@ -217,16 +207,21 @@ class Run {
         contour_pair("peak", "Q_ult (S/B = " + std::to_string(st_.peak.S_over_B).substr(0, 5) + ")", st_.peak.x,
                      st_.peak.y, st_.peak.shear_strain, st_.peak.displacement);
     }
-    char buf[1024];
-    std::snprintf(buf, sizeof buf,
-                  "{\n  \"scene\": \"%s\",\n  \"particles\": %zu,\n  \"steps\": %lld,\n  \"time_s\": %.6g,\n"
-                  "  \"wall_s\": %.3f,\n  \"threads\": %d,\n  \"particle_steps_per_s\": %.4g,\n"
-                  "  \"Q_ult_kN_per_m\": %.6g,\n  \"q_ult_kPa\": %.6g,\n  \"S_ult_m\": %.6g,\n  \"S_ult_over_B\": %.6g,\n"
-                  "  \"peak_reached\": %s,\n  \"residual_V_kN_per_m\": %.6g,\n  \"final_S_over_B\": %.6g\n}\n",
-                  scene_.name.c_str(), sim_.particles.n, sim_.step_count, sim_.time, sum.wall_s,
-                  thread_count_used(), sum.particle_steps_per_s, sum.Q_ult, sum.Q_ult / B_, sum.S_ult,
-                  sum.S_ult_over_B, sum.peak_reached ? "true" : "false", sum.residual_V, S_over_B());
-    write_file_atomically(path("summary.json"), buf);
+    const nlohmann::ordered_json summary = {{"scene", scene_.name},
+                                            {"particles", sim_.particles.n},
+                                            {"steps", sim_.step_count},
+                                            {"time_s", sim_.time},
+                                            {"wall_s", sum.wall_s},
+                                            {"threads", thread_count_used()},
+                                            {"particle_steps_per_s", sum.particle_steps_per_s},
+                                            {"Q_ult_kN_per_m", sum.Q_ult},
+                                            {"q_ult_kPa", sum.Q_ult / B_},
+                                            {"S_ult_m", sum.S_ult},
+                                            {"S_ult_over_B", sum.S_ult_over_B},
+                                            {"peak_reached", sum.peak_reached},
+                                            {"residual_V_kN_per_m", sum.residual_V},
+                                            {"final_S_over_B", S_over_B()}};
+    common::write_file_atomically(path("summary.json"), summary.dump(2) + "\n");
   }
 
   int thread_count_used() const { return thread_count(scene_.solver.threads); }

@@ -1,40 +1,17 @@
 #pragma once
-// Deterministic parallel loops over particles. Particles are split into static chunks, one
-// per thread; a particle-to-grid scatter adds into the thread's own copy of the nodal fields,
-// and the copies are summed in thread order, so results depend on the thread count only.
+// Deterministic particle-to-grid scatters: particles are split into static chunks, one per
+// thread; each thread adds into its own copy of the nodal fields, and the copies are summed in
+// thread order, so results depend on the thread count only.
 #include <algorithm>
 #include <cstddef>
 #include <vector>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+
+#include "acst_common/parallel_for.hpp"
 
 namespace acst::mpm {
 
-inline int thread_count(int requested) {
-#ifdef _OPENMP
-  return requested > 0 ? requested : omp_get_max_threads();
-#else
-  (void)requested;
-  return 1;
-#endif
-}
-
-// f(thread, index) for index in [0, n), static chunks.
-template <class F>
-void parallel_for(int threads, std::size_t n, F&& f) {
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads)
-  {
-    const int t = omp_get_thread_num();
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) f(t, i);
-  }
-#else
-  (void)threads;
-  for (std::size_t i = 0; i < n; ++i) f(0, i);
-#endif
-}
+using common::parallel_for;
+using common::thread_count;
 
 class Scatter {
  public:

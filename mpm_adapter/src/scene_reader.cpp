@@ -3,34 +3,20 @@
 #include <fstream>
 #include <sstream>
 
-#include "acst_driver/json_fields.hpp"
+#include "acst_common/json_fields.hpp"
+#include "acst_common/files.hpp"
 #include "acst_mpm/scene.hpp"
 
 namespace acst::mpm {
-namespace f = acst::driver::fields;
+namespace f = acst::common::fields;
 using nlohmann::json;
 
 namespace {
 
-std::string resolve(const std::string& base_dir, const std::string& name) {
-  const std::filesystem::path p(name);
-  return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
-}
-
 std::string read_text(const std::string& file, const std::string& path) {
-  std::ifstream in(file);
-  if (!in) f::fail(path, "cannot open '" + file + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-json parse(const std::string& text, const std::string& path) {
-  try {
-    return json::parse(text);
-  } catch (const json::parse_error& e) {
-    f::fail(path, std::string("invalid JSON: ") + e.what());
-  }
+  std::optional<std::string> text = common::read_file(file);
+  if (!text) f::fail(path, "cannot open '" + file + "'");
+  return *text;
 }
 
 void read_materials(const json& j, const std::string& path, const std::string& dir, Scene& s) {
@@ -41,7 +27,7 @@ void read_materials(const json& j, const std::string& path, const std::string& d
     MaterialSpec m;
     m.name = item.key();
     if (item.value().is_string()) {
-      const std::string file = resolve(dir, item.value().get<std::string>());
+      const std::string file = common::resolve(dir, item.value().get<std::string>());
       m.json_text = read_text(file, p);
       m.source = file;
     } else {
@@ -148,7 +134,7 @@ OutputSpec read_output(const json& j, const std::string& p, const std::string& d
   }
   if (j.contains("contours_at_peak")) o.contours_at_peak = f::boolean(j["contours_at_peak"], p + "/contours_at_peak");
   if (j.contains("lab_curve")) {
-    o.lab_curve = resolve(dir, f::string(j["lab_curve"], p + "/lab_curve"));
+    o.lab_curve = common::resolve(dir, f::string(j["lab_curve"], p + "/lab_curve"));
     if (!std::ifstream(o.lab_curve)) f::fail(p + "/lab_curve", "cannot open '" + o.lab_curve + "'");
   }
   if (j.contains("lab_label")) o.lab_label = f::string(j["lab_label"], p + "/lab_label");
@@ -161,7 +147,7 @@ OutputSpec read_output(const json& j, const std::string& p, const std::string& d
 }  // namespace
 
 Scene parse_scene(const std::string& json_text, const std::string& file) {
-  const json j = parse(json_text, "");
+  const json j = f::parse(json_text, "", "the scene");
   f::allow_keys(j, {"name", "description", "grid", "materials", "bodies", "initial_stress", "gravity", "walls",
                     "surcharge_kPa", "footing", "solver", "stop", "output"},
                 "");
@@ -230,14 +216,12 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
 }
 
 Scene read_scene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::optional<std::string> text = common::read_file(path);
+  if (!text) throw common::InputError(path + ": cannot open the scene file");
   try {
-    return parse_scene(ss.str(), path);
-  } catch (const SceneError& e) {
-    throw SceneError(path + ": " + e.what());
+    return parse_scene(*text, path);
+  } catch (const common::InputError& e) {
+    throw common::InputError(path + ": " + e.what());
   }
 }
 

@@ -6,16 +6,12 @@
 // positive.
 #include <map>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace acst::calibration {
+#include "acst_common/input_error.hpp"
 
-// Any invalid fit description; the message starts with the JSON path of the error.
-struct FitError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+namespace acst::calibration {
 
 struct FittedParameter {
   std::string name;   // a material constant (acst::parameter_names)

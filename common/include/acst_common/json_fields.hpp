@@ -30,6 +30,19 @@ inline std::string shown(double v) {
   return buf;
 }
 
+// Parses `text`; a syntax error or a number beyond the range of a double fails at `path`,
+// naming `what` ("the scene", "the material file 'x.json'").
+inline json parse(const std::string& text, const std::string& path, const std::string& what) {
+  try {
+    return json::parse(text);
+  } catch (const json::exception& e) {
+    std::string msg = e.what();
+    const auto bracket = msg.find("] ");
+    if (msg.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) msg = msg.substr(bracket + 2);
+    fail(path, what + " is not valid JSON: " + msg);
+  }
+}
+
 inline const json& object(const json& j, const std::string& path) {
   if (!j.is_object()) fail(path, std::string("expected a JSON object, got ") + j.type_name());
   return j;

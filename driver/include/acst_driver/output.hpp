@@ -5,7 +5,8 @@
 // leaves a half-written file over a good one.
 #include <string>
 
-#include "acst_driver/files.hpp"
+#include "acst_common/files.hpp"
+#include "acst_common/gnuplot.hpp"
 #include "acst_driver/runner.hpp"
 #include "acst_driver/scene.hpp"
 

@@ -14,7 +14,7 @@
 
 #include "acst/material.hpp"
 #include "acst_driver/mixed_control.hpp"
-#include "acst_driver/scene_error.hpp"
+#include "acst_common/input_error.hpp"
 
 namespace acst::driver {
 
@@ -111,7 +111,7 @@ Scene read_scene(const std::string& path);
 // The same from JSON text; `base_dir` resolves relative paths, `default_name` names the output.
 Scene parse_scene(const std::string& json_text, const std::string& base_dir, const std::string& default_name);
 
-// Throws SceneError if the six rows cannot fix all six strain components with an elastic
+// Throws common::InputError if the six rows cannot fix all six strain components with an elastic
 // stiffness of this material (rank < 6), naming the free component; `path` prefixes the message.
 void check_rows_complete(const ControlRows& rows, const Material& material, const std::string& path);
 

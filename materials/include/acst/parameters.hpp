@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "acst_common/input_error.hpp"
+
 namespace acst {
 
 // Atmospheric pressure used to normalise p in the elastic and critical-state laws.
@@ -43,9 +45,7 @@ struct Parameters {
 };
 
 // Thrown for any invalid input; the message names the offending key and the allowed range.
-struct InputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using InputError = common::InputError;
 
 // A value outside its range; `parameter` names it (for JSON paths).
 struct ParameterRangeError : InputError {

@@ -6,12 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "acst_driver/scene_error.hpp"
+#include "acst_common/input_error.hpp"
 #include "acst_mpm/simulation.hpp"
 
 namespace acst::mpm {
-
-using SceneError = acst::driver::SceneError;
 
 struct MaterialSpec {
   std::string name;

@@ -1,0 +1,24 @@
+#pragma once
+// PNG figures through gnuplot, the one runner every tool uses.
+#include <string>
+
+namespace acst::common {
+
+// Whether gnuplot is on PATH (looked up once).
+bool gnuplot_available();
+
+// A string quoted for the POSIX shell, and one quoted for gnuplot (single quotes).
+std::string shell_quoted(const std::string& s);
+std::string gp_quoted(const std::string& s);
+
+// Runs `gnuplot ARGS` (arguments already quoted for the shell) inside folder `dir` ("" = the
+// current one). Returns "" on success, otherwise a warning with the start of gnuplot's output;
+// never throws.
+std::string run_gnuplot_command(const std::string& dir, const std::string& args);
+
+// Keeps `script` at gp_path and runs it with the gnuplot variable `png` set to a temporary name
+// that is renamed to png_path on success. Returns "" on success, otherwise a warning (gnuplot
+// missing or failed); never throws.
+std::string run_gnuplot(const std::string& script, const std::string& gp_path, const std::string& png_path);
+
+}  // namespace acst::common
