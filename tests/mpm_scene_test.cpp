@@ -73,3 +73,10 @@ TEST(MpmScene, SandNeedsAVoidRatio) {
 TEST(MpmScene, MissingSceneFileIsAnError) {
   EXPECT_THROW(read_scene("/no/such/scene.json"), acst::common::InputError);
 }
+
+// The scene name becomes the output folder and reaches gnuplot scripts: a plain stem only.
+TEST(MpmScene, NameIsAPlainFileStem) {
+  for (const char* bad : {"..", ".", "../up", "a/b", "two words", "quote'd", "line\\nbreak", ""})
+    expect_error(replaced(R"("name": "s")", std::string("\"name\": \"") + bad + "\""), "/name", "plain file stem");
+  EXPECT_EQ(parse_scene(replaced(R"("name": "s")", R"("name": "V85.6_alpha-0")")).name, "V85.6_alpha-0");
+}

@@ -3,8 +3,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "acst_common/json_fields.hpp"
 #include "acst_common/files.hpp"
+#include "acst_common/json_fields.hpp"
+#include "acst_common/plain_stem.hpp"
 #include "acst_mpm/scene.hpp"
 
 namespace acst::mpm {
@@ -155,7 +156,8 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   Scene s;
   s.file = file;
   s.text = j.dump();
-  s.name = j.contains("name") ? f::string(j["name"], "/name") : std::filesystem::path(file).stem().string();
+  s.name = common::require_plain_stem(
+      j.contains("name") ? f::string(j["name"], "/name") : std::filesystem::path(file).stem().string(), "/name");
   if (s.name.empty() || s.name.find('/') != std::string::npos) f::fail("/name", "a non-empty name without '/' is required");
   for (const char* k : {"grid", "materials", "bodies", "stop"})
     if (!j.contains(k)) f::fail("", std::string("'") + k + "' is required");
