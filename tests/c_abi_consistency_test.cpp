@@ -1,6 +1,6 @@
 // The C ABI (acst_update, acst_update_batch) and the Abaqus entry umat_ give the same numbers as
 // the C++ API (acst::Material) on the same path. The convention change is written out here,
-// independently of materials/c_abi/abi_convention.hpp:
+// independently of materials/c_abi/src/abi_convention.hpp:
 //   ABI stress  = -(model stress)                       (tension positive)
 //   ABI strain  = -(model strain), shear slots doubled  (engineering gamma_ij = 2 eps_ij)
 //   ABI tangent[6 i + j] = d sigma_i / d gamma_j = D_model(i, j) * (j is shear ? 1/2 : 1)
@@ -213,7 +213,7 @@ TEST(CAbiConsistency, ElasticTangentMatchesFiniteDifferenceOfUpdate) {
     }
 }
 
-// PROPS in the order documented in materials/c_abi/umat.cpp, filled by name from the JSON file.
+// PROPS in the order documented in materials/c_abi/src/umat.cpp, filled by name from the JSON file.
 std::vector<double> props_from_json(const std::string& text) {
   const nlohmann::json j = nlohmann::json::parse(text);
   const nlohmann::json& p = j.at("parameters");
