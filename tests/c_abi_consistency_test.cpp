@@ -8,6 +8,8 @@
 // round-off; 1e-12 relative leaves room for nothing but that.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -429,3 +431,99 @@ TEST(CAbiConsistency, UmatRejectsBadNtensAndShortPropsWithPnewdtZero) {
 }
 
 }  // namespace
+
+// DROT (Abaqus/Standard convention, the default): the host hands over the stress already turned
+// by the increment's rigid rotation R and expects the fabric in STATEV to be turned by umat_.
+// A rigidly rotated problem must give the rotated answer. The rotation is written here with
+// 3 x 3 matrices (engineering shear halved for strains), independently of the library's.
+namespace {
+
+using M3 = Eigen::Matrix3d;
+
+M3 tensor_of(const double* v, double shear_factor) {
+  M3 m;
+  m << v[0], shear_factor * v[3], shear_factor * v[4], shear_factor * v[3], v[1], shear_factor * v[5],
+      shear_factor * v[4], shear_factor * v[5], v[2];
+  return m;
+}
+
+void voigt_of(const M3& m, double shear_factor, double* v) {
+  const double out[6] = {m(0, 0), m(1, 1), m(2, 2), m(0, 1) / shear_factor, m(0, 2) / shear_factor,
+                         m(1, 2) / shear_factor};
+  std::copy(out, out + 6, v);
+}
+
+void rotated(const double* v, const M3& R, double shear_factor, double* out) {
+  voigt_of(R * tensor_of(v, shear_factor) * R.transpose(), shear_factor, out);
+}
+
+double max_abs(const double* v, int n) {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = std::max(m, std::abs(v[i]));
+  return m;
+}
+
+}  // namespace
+
+TEST(CAbiConsistency, UmatTurnsTheFabricWithDrotAndGivesTheRotatedAnswer) {
+  const std::string text = acst::test::read_text(guide_path);
+  std::vector<double> props = props_from_json(text);
+  props.push_back(1.0);  // PROPS(21): pressure floor policy "fail" (no silent reset here)
+  ModelHandle h(text);
+  double stress[6], statev[ACST_NSTATV];
+  const double s0[6] = {-150, -100, -80, 10, -5, 3}, b[3] = {1.0, 0.4, -0.3};
+  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  const double dstran[6] = {-2e-4, 5e-5, 4e-5, 6e-5, -3e-5, 2e-5};
+  const M3 R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+
+  // Reference: the unrotated problem.
+  UmatCall umat;
+  double s_ref[6], q_ref[ACST_NSTATV];
+  std::copy(stress, stress + 6, s_ref);
+  std::copy(statev, statev + ACST_NSTATV, q_ref);
+  umat(s_ref, q_ref, dstran, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  ASSERT_EQ(umat.pnewdt, 1.0);
+
+  // Abaqus: stress and strain increment turned by R, the fabric still in the old frame, DROT = R.
+  double s_rot[6], q_rot[ACST_NSTATV], d_rot[6];
+  rotated(stress, R, 1.0, s_rot);
+  rotated(dstran, R, 0.5, d_rot);
+  std::copy(statev, statev + ACST_NSTATV, q_rot);
+  Eigen::Map<M3>(umat.drot) = R;  // DROT(i, j) column-major, as Eigen stores it
+  umat(s_rot, q_rot, d_rot, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  ASSERT_EQ(umat.pnewdt, 1.0);
+
+  double s_expected[6], f_expected[6];
+  rotated(s_ref, R, 1.0, s_expected);
+  rotated(q_ref, R, 1.0, f_expected);  // the fabric is stored with tensor shear components
+  const double stol = 1e-9 * max_abs(s_expected, 6), ftol = 1e-9 * std::max(max_abs(f_expected, 6), 1e-3);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(s_rot[i], s_expected[i], stol) << "stress " << i;
+    EXPECT_NEAR(q_rot[i], f_expected[i], ftol) << "fabric " << i;
+  }
+  EXPECT_NEAR(q_rot[6], q_ref[6], 1e-12) << "the void ratio is a scalar";
+
+  // PROPS(22) = 1, the material frame: the host has turned everything (fabric included) and
+  // umat_ must not turn the fabric again, whatever DROT says.
+  std::vector<double> material_frame = props;
+  material_frame.push_back(1.0);
+  double s_mat[6], q_mat[ACST_NSTATV];
+  rotated(stress, R, 1.0, s_mat);
+  std::copy(statev, statev + ACST_NSTATV, q_mat);
+  rotated(statev, R, 1.0, q_mat);
+  umat(s_mat, q_mat, d_rot, 6, ACST_NSTATV, material_frame.data(), static_cast<int>(material_frame.size()));
+  ASSERT_EQ(umat.pnewdt, 1.0);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_NEAR(s_mat[i], s_expected[i], stol) << "stress " << i;
+    EXPECT_NEAR(q_mat[i], f_expected[i], ftol) << "fabric " << i;
+  }
+
+  // A DROT that is no rotation is refused: PNEWDT 0 and the state untouched.
+  umat.drot[0] = 2.0;
+  double s_bad[6], q_bad[ACST_NSTATV];
+  std::copy(stress, stress + 6, s_bad);
+  std::copy(statev, statev + ACST_NSTATV, q_bad);
+  umat(s_bad, q_bad, dstran, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  EXPECT_EQ(umat.pnewdt, 0.0);
+  for (int i = 0; i < ACST_NSTATV; ++i) EXPECT_EQ(q_bad[i], statev[i]);
+}
