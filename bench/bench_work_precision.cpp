@@ -1,4 +1,4 @@
-// Work-precision of the explicit stress-point integrators (docs/stress-integration.md section 3).
+// Work-precision of the explicit stress-point integrators (docs/integration.md section 3).
 // Drained triaxial compression from 100 kPa of dense (e0 0.67) and loose (e0 0.9) sand, guide
 // set, to 10 % axial strain in increments of 1e-4 (1000 calls) and 1e-2 (10 calls). The strain
 // path is solved once by the driver (RK45, STOL 1e-10) and replayed as strain increments through

@@ -1,4 +1,4 @@
-// Inherent (fabric) anisotropy, docs/acst-model.md section 4: with the deposition direction b
+// Inherent (fabric) anisotropy, docs/model.md section 4: with the deposition direction b
 // (normal to the bedding planes) along the major loading axis (bedding angle alpha = 0) the
 // sand is strongest; as alpha grows to 90 deg (sigma1 in the bedding planes) it weakens.
 #include <gtest/gtest.h>

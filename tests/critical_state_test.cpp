@@ -1,5 +1,5 @@
 // Drained and undrained triaxial compression of the guide set end at the critical state of
-// docs/acst-model.md section 3: q/p = Mc, e = e_c(p), and for ACST |F| = 1 with F aligned to n (A = 1).
+// docs/model.md section 3: q/p = Mc, e = e_c(p), and for ACST |F| = 1 with F aligned to n (A = 1).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +13,7 @@ namespace {
 using acst::test::Drainage;
 using acst::test::TriaxialPoint;
 
-constexpr double pa = 101.0;  // kPa, docs/acst-model.md section 1
+constexpr double pa = 101.0;  // kPa, docs/model.md section 1
 
 // The critical state line written out here from the notes (Li & Wang 1998), not taken from the library.
 double critical_void_ratio(const acst::Parameters& prm, double p) {
@@ -54,7 +54,7 @@ TEST(CriticalState, LooseDrainedTriaxialReachesCriticalStateAt100PercentAxialStr
 }
 
 TEST(CriticalState, DenseSampleIsStillAboveCriticalStressRatioAt30Percent) {
-  // docs/acst-model.md section 9: with moderate k_f a drained test is still approaching critical
+  // docs/model.md section 9: with moderate k_f a drained test is still approaching critical
   // state at 30 % axial strain, q/p a few per cent above Mc for dense sand. "A few per cent" is
   // asserted as more than 2 % above Mc, and still below the peak.
   const auto path = drained(0.67, 3000);
@@ -90,7 +90,7 @@ TEST(CriticalState, UndrainedMediumDenseSandReachesCriticalStateAtItsOwnVoidRati
 TEST(CriticalState, UndrainedLooseSandLiquefiesAtConstantVolume) {
   // e0 = 0.95 lies above e_Gamma = 0.934, the CSL's void ratio at p = 0: no critical state with
   // p > 0 exists at this volume, so undrained shearing must take p to zero (static liquefaction).
-  // The library holds such a point at its floor p_min (docs/acst-model.md section 10).
+  // The library holds such a point at its floor p_min (docs/model.md section 10).
   const acst::Material mat = acst::test::guide_material();
   const acst::Parameters& prm = mat.parameters();
   const double e0 = 0.95;

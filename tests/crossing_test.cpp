@@ -1,4 +1,4 @@
-// Elastic-plastic crossing inside one strain increment (docs/stress-integration.md section 1,
+// Elastic-plastic crossing inside one strain increment (docs/integration.md section 1,
 // step 2): a start inside the cone that crosses the yield surface, and a start on the surface
 // whose increment first unloads, then reloads on the far side of the cone. Each single big
 // increment (ME, STOL 1e-4, the default) must agree with a reference made of many small

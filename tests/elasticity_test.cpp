@@ -1,4 +1,4 @@
-// Pressure-dependent hypoelasticity (docs/acst-model.md section 2) seen through Material::update
+// Pressure-dependent hypoelasticity (docs/model.md section 2) seen through Material::update
 // and Material::tangent: G = G0 pa (2.97-e)^2/(1+e) sqrt(p/pa), K = G 2(1+nu)/(3(1-2nu)),
 // d sigma = 2G de_dev + K d eps_v I. The moduli are written out here, not taken from the library.
 #include <gtest/gtest.h>
@@ -89,7 +89,7 @@ acst::State reference_elastic(const acst::Parameters& prm, acst::State s, const 
 }
 
 TEST(Elasticity, LargerIncrementIsASecondOrderSecantStepNotOneTangent) {
-  // docs/stress-integration.md: the elastic part is a secant (Heun) step. Its error against the
+  // docs/integration.md: the elastic part is a secant (Heun) step. Its error against the
   // exact hypoelastic path is third order in the increment: about |d sigma| (dp/p)^2 / 12.
   const acst::Material mat = acst::test::guide_material();
   acst::State s = inside_the_cone(mat);

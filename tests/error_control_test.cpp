@@ -1,4 +1,4 @@
-// Error control of the stress-point integrators (docs/stress-integration.md sections 1-3).
+// Error control of the stress-point integrators (docs/integration.md sections 1-3).
 // Drained triaxial compression of dense (e0 0.67) and loose (e0 0.9) sand from 100 kPa, guide
 // set, ten axial strain increments of 1e-2 (to 10 % axial strain). The strain path is computed
 // once with the driver at a fine tolerance and then replayed as pure strain increments, so every

@@ -1,4 +1,4 @@
-// Paths that stress an integrator (docs/stress-integration.md section 4), at increments
+// Paths that stress an integrator (docs/integration.md section 4), at increments
 // 1e-4..1e-2 per call, with the default integrator (ME, STOL 1e-4): a giant increment, a
 // reversal inside one increment, unloading through p -> 0, shear at p0 = 1 kPa, noisy strain
 // increments. Pass rules: no NaN ever; every failure is a status with a reason and leaves the

@@ -1,4 +1,4 @@
-// Isotropic reduction, docs/acst-model.md section 8: F0 = e_A = k_f = 0 gives A = 0 and
+// Isotropic reduction, docs/model.md section 8: F0 = e_A = k_f = 0 gives A = 0 and
 // zeta = psi, the isotropic critical-state model through the same code path; the reduction
 // must be exact, bit for bit.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Loading direction n and yield-surface gradient of f = R/g(theta) - H (docs/acst-model.md
+// Loading direction n and yield-surface gradient of f = R/g(theta) - H (docs/model.md
 // section 5), checked against finite differences of a function written out here from the notes.
 #include <gtest/gtest.h>
 

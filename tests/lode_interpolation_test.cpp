@@ -1,4 +1,4 @@
-// Lode angle measure and the Lode interpolation g(theta) of Li (2002), docs/acst-model.md section 1.
+// Lode angle measure and the Lode interpolation g(theta) of Li (2002), docs/model.md section 1.
 #include <gtest/gtest.h>
 
 #include <cmath>

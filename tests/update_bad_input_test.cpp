@@ -1,6 +1,6 @@
 // Material::update on bad input (C++ API): a non-finite strain increment is invalid input, a
 // non-finite or non-physical state is reported as such, and in both cases the state is left
-// exactly as it was (docs/stress-integration.md: never a silently wrong stress).
+// exactly as it was (docs/integration.md: never a silently wrong stress).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -74,7 +74,7 @@ inline Replay replay(const Material& m, State state, const std::vector<Sym>& pat
   return out;
 }
 
-// Error of a state's stress against a reference, as docs/stress-integration.md section 3 defines it.
+// Error of a state's stress against a reference, as docs/integration.md section 3 defines it.
 inline double relative_stress_error(const State& s, const State& ref) {
   return norm(s.stress - ref.stress) / std::max(norm(ref.stress), atmospheric_pressure);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The ACST model as the integrators see it: rates of (stress, fabric, void ratio) for a strain
-// increment, yield value, error norm and drift correction (docs/acst-model.md section 7).
+// increment, yield value, error norm and drift correction (docs/model.md section 7).
 #include <Eigen/Core>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Critical state line and state parameter (docs/acst-model.md section 3).
+// Critical state line and state parameter (docs/model.md section 3).
 #include <algorithm>
 #include <cmath>
 

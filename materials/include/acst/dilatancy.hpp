@@ -1,5 +1,5 @@
 #pragma once
-// Dilatancy (docs/acst-model.md section 6).
+// Dilatancy (docs/model.md section 6).
 #include <cmath>
 
 namespace acst {

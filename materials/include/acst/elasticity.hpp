@@ -1,5 +1,5 @@
 #pragma once
-// Pressure-dependent hypoelasticity (docs/acst-model.md section 2).
+// Pressure-dependent hypoelasticity (docs/model.md section 2).
 #include <algorithm>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Fabric tensor and the anisotropic state variables (docs/acst-model.md sections 3 and 4).
+// Fabric tensor and the anisotropic state variables (docs/model.md sections 3 and 4).
 #include <Eigen/Core>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Loading index in strain-driven form (docs/acst-model.md section 6).
+// Loading index in strain-driven form (docs/model.md section 6).
 #include <cmath>
 
 #include "acst/tensor.hpp"

@@ -14,29 +14,29 @@ inline constexpr double atmospheric_pressure = 101.0;
 enum class Variant { anisotropic, isotropic };
 
 struct Parameters {
-  // Elasticity (section 2 of docs/acst-model.md).
+  // Elasticity (docs/model.md section 2).
   double G0 = 125.0;
   double nu = 0.1;
-  // Critical state (section 3).
+  // Critical state (docs/model.md section 3).
   double Mc = 1.25;
   double c = 0.75;
   double e_Gamma = 0.934;
   double lambda_c = 0.019;
   double xi = 0.7;
-  // Dilatancy and plastic modulus (section 6).
+  // Dilatancy and plastic modulus (docs/model.md section 6).
   double d1 = 0.88;
   double m = 3.5;
   double h1 = 3.15;
   double h2 = 3.05;
   double n = 1.1;
-  // Fabric (section 4); all zero in the isotropic reduction.
+  // Fabric (docs/model.md section 4); all zero in the isotropic reduction.
   double e_A = 0.1;
   double F0 = 0.5;
   double k_f = 5.0;
   // Density bounds, for Dr <-> e conversions.
   double e_max = 0.977;
   double e_min = 0.597;
-  // Guards (section 10).
+  // Guards (docs/model.md section 10).
   double p_min = 0.5;       // kPa: lowest mean stress a substep may reach
   double h_min = 1e-3;      // floor of h = h1 - h2 e
   double R_tolerance = 1e-9;  // below this R the loading direction is taken from the strain increment

@@ -1,5 +1,5 @@
 #pragma once
-// Plastic modulus (docs/acst-model.md section 6).
+// Plastic modulus (docs/model.md section 6).
 #include <algorithm>
 #include <cmath>
 

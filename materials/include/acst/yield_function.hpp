@@ -1,5 +1,5 @@
 #pragma once
-// Yield surface f = R/g(theta) - H and its loading direction n (docs/acst-model.md section 5).
+// Yield surface f = R/g(theta) - H and its loading direction n (docs/model.md section 5).
 #include <algorithm>
 #include <cmath>
 

@@ -28,7 +28,7 @@ struct Counters {
   int rate_evaluations = 0;      // plastic and elastic rate evaluations
   int crossing_iterations = 0;   // Pegasus iterations for the elastic-plastic crossing
   int unload_reload = 0;         // calls that unloaded then reloaded within the increment
-  // Guards (docs/acst-model.md section 10): each counts the times it fired.
+  // Guards (docs/model.md section 10): each counts the times it fired.
   int guard_pressure_floor = 0;  // a stage or trial fell below p_min
   int guard_small_R = 0;         // loading direction taken from the strain increment
   int guard_lode_clamp = 0;      // sin3theta clamped to [-1, 1]
