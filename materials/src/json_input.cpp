@@ -57,27 +57,6 @@ reference::LinearElastic elastic_constants(const json& j, const std::string& pat
   return {number_in_open_range(j, "E", path, 0.0, unbounded), number_in_open_range(j, "nu", path, -1.0, 0.5)};
 }
 
-json parse_object(const std::string& text) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
-    throw InputError(std::string("material JSON does not parse: ") + e.what());
-  }
-  require_object(j, "");
-  reject_unknown_keys(j, {"model", "parameters", "integrator"}, "");
-  if (!j.contains("parameters")) throw InputError("/parameters: required object is missing");
-  return j;
-}
-
-Material material_from_document(const json& j) {
-  const Variant v = j.contains("model") ? variant_from_json(j["model"], "/model") : Variant::anisotropic;
-  const Parameters p = parameters_from_json(j["parameters"], v, "/parameters");
-  const integration::Options o =
-      j.contains("integrator") ? options_from_json(j["integrator"], "/integrator") : integration::Options{};
-  return Material(p, o);
-}
-
 }  // namespace
 
 Variant variant_from_json(const json& j, const std::string& path) {
@@ -170,7 +149,28 @@ integration::Options options_from_json(const json& j, const std::string& path) {
   return o;
 }
 
-Material Material::from_json(const std::string& text) { return material_from_document(parse_object(text)); }
+json model_document(const std::string& text) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
+    throw InputError(std::string("material JSON does not parse: ") + e.what());
+  }
+  require_object(j, "");
+  reject_unknown_keys(j, {"model", "parameters", "integrator"}, "");
+  if (!j.contains("parameters")) throw InputError("/parameters: required object is missing");
+  return j;
+}
+
+Material material_from_document(const json& j) {
+  const Variant v = j.contains("model") ? variant_from_json(j["model"], "/model") : Variant::anisotropic;
+  const Parameters p = parameters_from_json(j["parameters"], v, "/parameters");
+  const integration::Options o =
+      j.contains("integrator") ? options_from_json(j["integrator"], "/integrator") : integration::Options{};
+  return Material(p, o);
+}
+
+Material Material::from_json(const std::string& text) { return material_from_document(model_document(text)); }
 
 reference::LinearElastic linear_elastic_from_json(const json& j, const std::string& path) {
   require_object(j, path);
@@ -191,21 +191,5 @@ reference::VonMises von_mises_from_json(const json& j, const std::string& path) 
   return {elastic, yield_stress};
 }
 
-AnyModel any_model_from_json(const std::string& text) {
-  const json j = parse_object(text);
-  if (!j.contains("model")) return material_from_document(j);
-  const json& model = j["model"];
-  const char* const allowed = "(allowed: ACST, isotropic, linear_elastic, von_mises)";
-  if (!model.is_string())
-    throw InputError(std::string("/model: expected a string ") + allowed + ", got " + model.type_name());
-  const std::string kind = model.get<std::string>();
-  if (kind == "ACST" || kind == "isotropic") return material_from_document(j);
-  if (kind != "linear_elastic" && kind != "von_mises")
-    throw InputError("/model: unknown model '" + kind + "' " + allowed);
-  if (j.contains("integrator"))
-    throw InputError("/integrator: model '" + kind + "' has a closed-form update and takes no integrator options");
-  if (kind == "linear_elastic") return linear_elastic_from_json(j["parameters"], "/parameters");
-  return von_mises_from_json(j["parameters"], "/parameters");
-}
 
 }  // namespace acst

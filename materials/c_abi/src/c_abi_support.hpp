@@ -1,17 +1,28 @@
 #pragma once
-// Helpers shared by the acst_* functions and umat_.
+// Helpers shared by the acst_* functions, the model kinds and umat_.
 #include <string>
 
 #include "acst.h"
+#include "acst/elasticity.hpp"
 #include "acst/integration/report.hpp"
 #include "acst/material.hpp"
 
 namespace acst::abi {
 
 acst_status make_status(int code, const std::string& message, double factor);
-acst_status ok_status();
-// Converts, updates one point, converts back; stress and statev untouched on failure.
+acst_status ok_status();  // no formatting: it is on the hot path
+acst_status status_from_report(const integration::Report& r);
+void copy_counters(const integration::Report& r, acst_counters* out);
+
+// Converts, updates one sand point, converts back; stress and statev untouched on failure.
 acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
                          integration::Report& rep);
+
+// Entry checks of the closed-form updates, reported like the integrator's: false (and `rep`
+// says why) for a non-finite increment, stress or state.
+bool entry_ok(const Sym& stress, bool state_ok, const Sym& strain_increment, integration::Report& rep);
+
+// Diagnostics of a verification kind: p, q, G and K; the sand-specific entries are NaN.
+void reference_diagnostics(double* out, const Sym& stress, const ElasticModuli& moduli);
 
 }  // namespace acst::abi

@@ -1,14 +1,18 @@
 #pragma once
-// Layout of the state-variable arrays of each model kind, shared by the acst_* functions and umat_.
+// The sand kinds' state-variable array (ACST and isotropic), shared by their ABI kind and umat_.
 #include <Eigen/Core>
 
 #include "acst/state.hpp"
+#include "model_kind.hpp"
 
 namespace acst::abi {
 
 inline constexpr int state_size = 10;
 inline constexpr const char* state_names[state_size] = {
     "F11", "F22", "F33", "F12", "F13", "F23", "void_ratio", "H", "substep_hint", "pressure_floor_resets"};
+inline constexpr int fabric_offset[] = {0};  // the fabric tensor is the only tensorial entry
+inline constexpr StateLayout sand_state_layout{state_names, state_size, fabric_offset, 1};
+static_assert(state_size == ACST_NSTATV, "ACST_NSTATV is the sand state size");
 
 inline void fill_state(State& s, const double* statev) {
   for (int i = 0; i < 6; ++i) s.fabric[i] = statev[i];
@@ -28,14 +32,12 @@ inline void store_state(const State& s, double* statev) {
   statev[9] = s.pressure_floor_resets;
 }
 
-// The fabric tensor is the only tensorial entry: it turns with the material (F -> Q F Q^T).
-inline void rotate_tensorial_state(double* statev, const Eigen::Matrix3d& Q) {
-  Eigen::Map<Sym> fabric(statev);
-  fabric = rotate(fabric, Q);
+// Turns every tensorial entry of a layout with the material (T -> Q T Q^T).
+inline void rotate_tensorial_state(double* statev, const StateLayout& layout, const Eigen::Matrix3d& Q) {
+  for (int k = 0; k < layout.tensors; ++k) {
+    Eigen::Map<Sym> tensor(statev + layout.tensor_offsets[k]);
+    tensor = rotate(tensor, Q);
+  }
 }
-
-// linear_elastic has no state; von_mises one scalar.
-inline constexpr int von_mises_state_size = 1;
-inline constexpr const char* von_mises_state_names[von_mises_state_size] = {"equivalent_plastic_strain"};
 
 }  // namespace acst::abi

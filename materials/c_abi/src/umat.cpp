@@ -82,7 +82,7 @@ extern "C" void umat_(double* stress, double* statev, double* ddsdde, double*, d
     std::copy(statev, statev + ACST_NSTATV, state);
     if (rotates_with_drot(props, *nprops)) {
       const Eigen::Matrix3d R = rotation_increment(drot);
-      if (!R.isIdentity(0.0)) acst::abi::rotate_tensorial_state(state, R);
+      if (!R.isIdentity(0.0)) acst::abi::rotate_tensorial_state(state, acst::abi::sand_state_layout, R);
     }
     acst::integration::Report rep;
     const acst_status st = acst::abi::update_point(s6, state, tangent, mat, d6, rep);

@@ -2,7 +2,6 @@
 // Reading parameters and integrator options from JSON, with errors that name the JSON path.
 #include <nlohmann/json.hpp>
 #include <string>
-#include <variant>
 
 #include "acst/integration/options.hpp"
 #include "acst/material.hpp"
@@ -29,12 +28,11 @@ reference::LinearElastic linear_elastic_from_json(const nlohmann::json& j, const
 // sigma_y = sqrt(3) s_u)}, both kPa > 0; unknown keys rejected.
 reference::VonMises von_mises_from_json(const nlohmann::json& j, const std::string& path);
 
-// Every model the C ABI offers behind one handle.
-using AnyModel = std::variant<Material, reference::LinearElastic, reference::VonMises>;
+// A material document {"model", "parameters", "integrator"} parsed and its keys checked
+// (unknown keys rejected, "parameters" required); the values are each model kind's to read.
+nlohmann::json model_document(const std::string& json_text);
 
-// {"model": "ACST"|"isotropic"|"linear_elastic"|"von_mises", "parameters": {...}, "integrator": {...}};
-// "model" defaults to ACST; the two reference models have no integrator and reject that key.
-// ACST and isotropic read exactly as Material::from_json.
-AnyModel any_model_from_json(const std::string& json_text);
+// The ACST or isotropic material of such a document ("model" defaults to ACST).
+Material material_from_document(const nlohmann::json& document);
 
 }  // namespace acst

@@ -1,0 +1,78 @@
+// ACST and its isotropic reduction behind the C ABI: the substepping integrator of
+// acst::Material, ten state variables (fabric, void ratio, H, substep hint, floor resets).
+#include <Eigen/Core>
+#include <cstring>
+
+#include "abi_convention.hpp"
+#include "acst/json_input.hpp"
+#include "acst/material.hpp"
+#include "c_abi_support.hpp"
+#include "model_kind.hpp"
+#include "state_layout.hpp"
+
+namespace acst::abi {
+
+namespace {
+
+class SandKind final : public ModelKind {
+ public:
+  explicit SandKind(Material material) : material_(std::move(material)) {}
+
+  const char* name() const override {
+    return material_.parameters().variant == Variant::isotropic ? "isotropic" : "ACST";
+  }
+  const StateLayout& state() const override { return sand_state_layout; }
+
+  acst_status initial_state(double* statev, double* stress_out, const double* stress0, double void_ratio,
+                            const double* deposition_direction) const override {
+    if (!deposition_direction) return make_status(ACST_INVALID_INPUT, "acst_initial_state: a pointer argument is NULL", 1.0);
+    const Eigen::Vector3d b(deposition_direction[0], deposition_direction[1], deposition_direction[2]);
+    const State s = material_.initial_state(stress_to_model(stress0), void_ratio, b);
+    store_state(s, statev);
+    stress_from_model(s.stress, stress_out);
+    return ok_status();
+  }
+
+  acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
+                     integration::Report& rep) const override {
+    return update_point(stress, statev, tangent, material_, dstrain, rep);
+  }
+
+  ElasticModuli moduli(const double* stress, const double* statev) const override {
+    const Diagnostics d = material_.diagnostics(state_of(stress, statev));
+    return {d.G, d.K};
+  }
+
+  void diagnostics(double* out, const double* stress, const double* statev) const override {
+    const Diagnostics d = material_.diagnostics(state_of(stress, statev));
+    const double v[ACST_NDIAGNOSTICS] = {d.p,           d.q,   d.R, d.sin3theta, d.psi, d.zeta, d.A,
+                                         d.fabric_norm, d.critical_void_ratio, d.D, d.Kp, d.G, d.K};
+    std::memcpy(out, v, sizeof v);
+  }
+
+  acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const override {
+    if (!(relative_density >= 0.0 && relative_density <= 1.0))
+      return make_status(ACST_INVALID_INPUT,
+                         "acst_void_ratio_from_relative_density: relative density must lie in [0, 1]", 1.0);
+    *void_ratio = acst::void_ratio_from_relative_density(material_.parameters(), relative_density);
+    return ok_status();
+  }
+
+ private:
+  static State state_of(const double* stress, const double* statev) {
+    State s;
+    s.stress = stress_to_model(stress);
+    fill_state(s, statev);
+    return s;
+  }
+
+  Material material_;
+};
+
+}  // namespace
+
+std::unique_ptr<const ModelKind> make_sand_kind(const nlohmann::json& document) {
+  return std::make_unique<SandKind>(material_from_document(document));
+}
+
+}  // namespace acst::abi

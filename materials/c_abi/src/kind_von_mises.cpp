@@ -1,0 +1,71 @@
+// Perfectly plastic von Mises behind the C ABI (a verification kind): radial return, one state
+// variable (the equivalent plastic strain).
+#include <cmath>
+#include <string>
+
+#include "abi_convention.hpp"
+#include "acst/json_input.hpp"
+#include "acst/reference/von_mises.hpp"
+#include "c_abi_support.hpp"
+#include "model_kind.hpp"
+
+namespace acst::abi {
+
+namespace {
+
+constexpr const char* state_names[] = {"equivalent_plastic_strain"};
+constexpr StateLayout layout{state_names, 1, nullptr, 0};
+
+class VonMisesKind final : public ModelKind {
+ public:
+  explicit VonMisesKind(reference::VonMises m) : m_(m) {}
+
+  const char* name() const override { return "von_mises"; }
+  const StateLayout& state() const override { return layout; }
+
+  acst_status initial_state(double* statev, double* stress_out, const double* stress0, double,
+                            const double*) const override {
+    const Sym s = stress_to_model(stress0);
+    if (!s.allFinite()) return make_status(ACST_INVALID_INPUT, "acst_initial_state: initial stress is not finite", 1.0);
+    if (!reference::within_yield_surface(m_, s))
+      return make_status(ACST_NONPHYSICAL_STATE,
+                         "acst_initial_state: initial stress lies outside the von Mises yield surface (q = " +
+                             std::to_string(reference::equivalent_stress(s)) +
+                             " kPa > yield_stress = " + std::to_string(m_.yield_stress) + " kPa)",
+                         1.0);
+    statev[0] = 0.0;
+    stress_from_model(s, stress_out);
+    return ok_status();
+  }
+
+  acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
+                     integration::Report& rep) const override {
+    reference::VonMisesPoint point{stress_to_model(stress), statev[0]};
+    const Sym deps = strain_to_model(dstrain);
+    const bool state_ok = std::isfinite(point.equivalent_plastic_strain) && point.equivalent_plastic_strain >= 0.0;
+    if (!entry_ok(point.stress, state_ok, deps, rep)) return status_from_report(rep);
+    Mat6 D;
+    rep.plastic = reference::radial_return(m_, point, deps, tangent ? &D : nullptr);
+    stress_from_model(point.stress, stress);
+    statev[0] = point.equivalent_plastic_strain;
+    if (tangent) tangent_from_model(D, tangent);
+    return ok_status();
+  }
+
+  ElasticModuli moduli(const double*, const double*) const override { return reference::moduli(m_.elastic); }
+
+  void diagnostics(double* out, const double* stress, const double*) const override {
+    reference_diagnostics(out, stress_to_model(stress), reference::moduli(m_.elastic));
+  }
+
+ private:
+  reference::VonMises m_;
+};
+
+}  // namespace
+
+std::unique_ptr<const ModelKind> make_von_mises_kind(const nlohmann::json& document) {
+  return std::make_unique<VonMisesKind>(von_mises_from_json(document["parameters"], "/parameters"));
+}
+
+}  // namespace acst::abi

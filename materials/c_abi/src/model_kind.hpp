@@ -1,0 +1,48 @@
+#pragma once
+// One model kind behind the C ABI. The acst_* functions know nothing of the kinds: each kind
+// implements this interface in its own file and is registered once in model_kinds.cpp. All
+// arrays are in the ABI's convention (tension positive, engineering shear; docs/conventions.md).
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "acst.h"
+#include "acst/elasticity.hpp"
+#include "acst/integration/report.hpp"
+
+namespace acst::abi {
+
+// The state variables of a kind: names (their count is the state size) and where symmetric
+// tensors sit (6 slots each, tensor components 11 22 33 12 13 23), which turn with the material.
+struct StateLayout {
+  const char* const* names = nullptr;
+  int size = 0;
+  const int* tensor_offsets = nullptr;
+  int tensors = 0;
+};
+
+class ModelKind {
+ public:
+  virtual ~ModelKind() = default;
+  virtual const char* name() const = 0;  // as acst_model_kind returns it
+  virtual const StateLayout& state() const = 0;
+  virtual acst_status initial_state(double* statev, double* stress_out, const double* stress0, double void_ratio,
+                                    const double* deposition_direction) const = 0;
+  // Stress and state unchanged unless the status is OK; `rep` gets the counters.
+  virtual acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
+                             integration::Report& rep) const = 0;
+  virtual ElasticModuli moduli(const double* stress, const double* statev) const = 0;
+  virtual void diagnostics(double* out, const double* stress, const double* statev) const = 0;
+  // Relative density -> void ratio; kinds without a void ratio refuse.
+  virtual acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const;
+};
+
+// Reads a material document and builds its kind; throws InputError naming the JSON path.
+std::unique_ptr<const ModelKind> make_model_kind(const std::string& json_text);
+
+// The kinds, one file each (kind_*.cpp); `document` is the checked {"model", "parameters", ...}.
+std::unique_ptr<const ModelKind> make_sand_kind(const nlohmann::json& document);
+std::unique_ptr<const ModelKind> make_linear_elastic_kind(const nlohmann::json& document);
+std::unique_ptr<const ModelKind> make_von_mises_kind(const nlohmann::json& document);
+
+}  // namespace acst::abi

@@ -1,0 +1,55 @@
+// The registration list of the C ABI's model kinds: adding a kind is one file (kind_*.cpp,
+// implementing ModelKind) plus one line here.
+#include <string>
+
+#include "acst/json_input.hpp"
+#include "c_abi_support.hpp"
+#include "model_kind.hpp"
+
+namespace acst::abi {
+
+namespace {
+
+struct Registration {
+  const char* model;  // the JSON "model" value
+  bool takes_integrator;
+  std::unique_ptr<const ModelKind> (*make)(const nlohmann::json& document);
+};
+
+constexpr Registration kinds[] = {
+    {"ACST", true, make_sand_kind},
+    {"isotropic", true, make_sand_kind},
+    {"linear_elastic", false, make_linear_elastic_kind},
+    {"von_mises", false, make_von_mises_kind},
+};
+
+std::string allowed_models() {
+  std::string s;
+  for (const Registration& r : kinds) s += (s.empty() ? "" : ", ") + std::string(r.model);
+  return "(allowed: " + s + ")";
+}
+
+}  // namespace
+
+acst_status ModelKind::void_ratio_from_relative_density(double*, double) const {
+  return make_status(ACST_INVALID_INPUT, "acst_void_ratio_from_relative_density: only for sand models (ACST, isotropic)",
+                     1.0);
+}
+
+std::unique_ptr<const ModelKind> make_model_kind(const std::string& json_text) {
+  const nlohmann::json document = model_document(json_text);
+  if (!document.contains("model")) return kinds[0].make(document);
+  const nlohmann::json& model = document["model"];
+  if (!model.is_string())
+    throw InputError("/model: expected a string " + allowed_models() + ", got " + model.type_name());
+  const std::string name = model.get<std::string>();
+  for (const Registration& r : kinds) {
+    if (name != r.model) continue;
+    if (!r.takes_integrator && document.contains("integrator"))
+      throw InputError("/integrator: model '" + name + "' has a closed-form update and takes no integrator options");
+    return r.make(document);
+  }
+  throw InputError("/model: unknown model '" + name + "' " + allowed_models());
+}
+
+}  // namespace acst::abi
