@@ -203,3 +203,32 @@ TEST(ParametersJson, ValidFilesParseToTheirValues) {
 }
 
 }  // namespace
+
+// The documented parameter table is the library's own (acst::parameter_table), so the two
+// cannot drift apart: docs/model.md section 9 holds it between two markers.
+TEST(ParameterTable, DocsShowTheLibrarysTable) {
+  const std::string doc = acst::test::read_text("docs/model.md");
+  const std::string begin = "<!-- parameter table: generated from acst::parameter_table -->\n";
+  const std::string end = "<!-- end of parameter table -->";
+  const auto a = doc.find(begin), b = doc.find(end);
+  ASSERT_NE(a, std::string::npos);
+  ASSERT_NE(b, std::string::npos);
+  EXPECT_EQ(doc.substr(a + begin.size(), b - a - begin.size()), acst::parameter_table_markdown())
+      << "paste acst::parameter_table_markdown() into docs/model.md";
+}
+
+// Every row reaches its own member, PROPS entries come first and match parameter_names.
+TEST(ParameterTable, RowsAreDistinctMembersAndPropsComeFirst) {
+  acst::Parameters p;
+  for (int i = 0; i < acst::parameter_table_size; ++i) {
+    p.*acst::parameter_table[i].member = 1000.0 + i;
+    if (i < acst::parameter_count) {
+      EXPECT_TRUE(acst::parameter_table[i].props);
+      EXPECT_STREQ(acst::parameter_names[i], acst::parameter_table[i].name);
+    } else {
+      EXPECT_FALSE(acst::parameter_table[i].props) << acst::parameter_table[i].name;
+    }
+  }
+  for (int i = 0; i < acst::parameter_table_size; ++i) EXPECT_EQ(p.*acst::parameter_table[i].member, 1000.0 + i);
+  EXPECT_EQ(acst::parameter_count, 18);
+}

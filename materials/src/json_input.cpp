@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
+#include <vector>
 #include <sstream>
 
 #include "acst/material.hpp"
+#include "acst_common/json_fields.hpp"
 
 namespace acst {
 
@@ -13,25 +14,10 @@ using nlohmann::json;
 
 namespace {
 
-const json& require_object(const json& j, const std::string& path) {
-  if (!j.is_object()) throw InputError(path + ": expected a JSON object, got " + j.type_name());
-  return j;
-}
-
-void reject_unknown_keys(const json& j, const std::set<std::string>& allowed, const std::string& path) {
-  for (const auto& [key, value] : j.items()) {
-    if (!allowed.count(key)) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      throw InputError(path + "/" + key + ": unknown key (allowed: " + list + ")");
-    }
-  }
-}
+namespace f = common::fields;
 
 double number_at(const json& j, const std::string& key, const std::string& path) {
-  const json& v = j.at(key);
-  if (!v.is_number()) throw InputError(path + "/" + key + ": expected a number, got " + v.type_name());
-  return v.get<double>();
+  return f::number(j.at(key), path + "/" + key);
 }
 
 // A required number in the open interval (lo, hi).
@@ -68,26 +54,21 @@ Variant variant_from_json(const json& j, const std::string& path) {
 }
 
 Parameters parameters_from_json(const json& j, Variant variant, const std::string& path) {
-  require_object(j, path);
-  const std::set<std::string> fabric = {"F0", "e_A", "k_f"};
-  const std::set<std::string> guards = {"p_min", "h_min", "R_tolerance"};
-  std::set<std::string> allowed(guards);
-  for (const char* name : parameter_names) allowed.insert(name);
-  reject_unknown_keys(j, allowed, path);
+  f::object(j, path);
+  std::vector<std::string> allowed;
+  for (const ParameterInfo& info : parameter_table) allowed.push_back(info.name);
+  f::allow_keys(j, allowed, path);
   Parameters p;
   p.variant = variant;
-  for (int i = 0; i < parameter_count; ++i) {
-    const std::string name = parameter_names[i];
-    const bool optional = guards.count(name) || (variant == Variant::isotropic && fabric.count(name));
-    if (j.contains(name))
-      parameter_by_index(p, i) = number_at(j, name, path);
-    else if (variant == Variant::isotropic && fabric.count(name))
-      parameter_by_index(p, i) = 0.0;
-    else if (!optional)
-      throw InputError(path + "/" + name + ": required parameter is missing");
+  for (const ParameterInfo& info : parameter_table) {
+    const bool isotropic_zero = variant == Variant::isotropic && info.fabric;
+    if (j.contains(info.name))
+      p.*info.member = number_at(j, info.name, path);
+    else if (isotropic_zero)
+      p.*info.member = 0.0;
+    else if (!info.optional)
+      throw InputError(path + "/" + info.name + ": required parameter is missing");
   }
-  if (j.contains("h_min")) p.h_min = number_at(j, "h_min", path);
-  if (j.contains("R_tolerance")) p.R_tolerance = number_at(j, "R_tolerance", path);
   try {
     validate(p);
   } catch (const ParameterRangeError& e) {
@@ -99,9 +80,8 @@ Parameters parameters_from_json(const json& j, Variant variant, const std::strin
 }
 
 integration::Options options_from_json(const json& j, const std::string& path) {
-  require_object(j, path);
-  reject_unknown_keys(j,
-                      {"scheme", "stol", "ftol", "ltol", "min_substep", "max_substeps", "fe_substeps",
+  f::object(j, path);
+  f::allow_keys(j, {"scheme", "stol", "ftol", "ltol", "min_substep", "max_substeps", "fe_substeps",
                        "unload_scan_intervals", "reuse_last_substep", "pressure_floor"},
                       path);
   integration::Options o;
@@ -156,8 +136,8 @@ json model_document(const std::string& text) {
   } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
     throw InputError(std::string("material JSON does not parse: ") + e.what());
   }
-  require_object(j, "");
-  reject_unknown_keys(j, {"model", "parameters", "integrator"}, "");
+  f::object(j, "");
+  f::allow_keys(j, {"model", "parameters", "integrator"}, "");
   if (!j.contains("parameters")) throw InputError("/parameters: required object is missing");
   return j;
 }
@@ -173,14 +153,14 @@ Material material_from_document(const json& j) {
 Material Material::from_json(const std::string& text) { return material_from_document(model_document(text)); }
 
 reference::LinearElastic linear_elastic_from_json(const json& j, const std::string& path) {
-  require_object(j, path);
-  reject_unknown_keys(j, {"E", "nu"}, path);
+  f::object(j, path);
+  f::allow_keys(j, {"E", "nu"}, path);
   return elastic_constants(j, path);
 }
 
 reference::VonMises von_mises_from_json(const json& j, const std::string& path) {
-  require_object(j, path);
-  reject_unknown_keys(j, {"E", "nu", "yield_stress", "undrained_shear_strength"}, path);
+  f::object(j, path);
+  f::allow_keys(j, {"E", "nu", "yield_stress", "undrained_shear_strength"}, path);
   const bool by_yield_stress = j.contains("yield_stress");
   if (by_yield_stress == j.contains("undrained_shear_strength"))
     throw InputError(path + ": give exactly one of yield_stress or undrained_shear_strength (kPa, > 0)");

@@ -58,6 +58,19 @@ inline void allow_keys(const json& j, std::initializer_list<const char*> allowed
   }
 }
 
+// The same for a list of names built at run time.
+inline void allow_keys(const json& j, const std::vector<std::string>& allowed, const std::string& path) {
+  object(j, path);
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const std::string& a : allowed) ok = ok || item.key() == a;
+    if (ok) continue;
+    std::string list;
+    for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+    fail(path + "/" + item.key(), "unknown key (allowed here: " + list + ")");
+  }
+}
+
 // Exactly one of the keys (or at most one when `required` is false); returns it or "".
 inline std::string one_of(const json& j, std::initializer_list<const char*> keys, const std::string& path,
                           bool required = true) {

@@ -1,6 +1,7 @@
 // Abaqus-compatible UMAT entry point over the same update path as acst_update.
 //
-// PROPS(1..18): G0 nu Mc c e_Gamma lambda_c xi d1 m h1 h2 n e_A F0 k_f e_max e_min p_min
+// PROPS(1..18): the material constants in the order of acst::parameter_table (docs/model.md
+// section 9 lists them with their PROPS numbers).
 // PROPS(19) (optional): scheme, 0 FE-1, 1 ME (default), 2 RK23, 3 RK45;  PROPS(20) (optional): STOL;
 // PROPS(21) (optional): pressure floor, 0 reset to p_min (default), 1 fail with PNEWDT < 1.
 // PROPS(22) (optional): frame of STATEV's fabric, 0 (default) the host's rotating frame as in

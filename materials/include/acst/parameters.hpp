@@ -1,5 +1,6 @@
 #pragma once
 // ACST material constants and numerical guards (kPa, dimensionless otherwise).
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -53,17 +54,83 @@ struct ParameterRangeError : InputError {
   std::string parameter;
 };
 
-// Checks every value against its physical range; throws InputError naming the first bad one.
-void validate(const Parameters& p);
+// The one table of the material constants: every list of them (JSON keys, validation, the
+// umat_ PROPS order, the documentation's table) derives from it. Entries with `props` come
+// first, in PROPS order.
+struct ParameterInfo {
+  const char* name;
+  double Parameters::*member;
+  double lo, hi;
+  bool lo_open, hi_open;
+  const char* unit;
+  bool fabric;    // zero (may be omitted) in the isotropic reduction
+  bool optional;  // a guard with a default value
+  bool props;     // an entry of umat_'s PROPS array
+  const char* meaning;
+};
 
-// Names of the material constants in the order of the Abaqus PROPS array (see docs/c-abi.md).
-inline constexpr const char* parameter_names[] = {"G0", "nu",  "Mc", "c",   "e_Gamma", "lambda_c",
-                                                  "xi", "d1",  "m",  "h1",  "h2",      "n",
-                                                  "e_A", "F0", "k_f", "e_max", "e_min", "p_min"};
-inline constexpr int parameter_count = 18;
+inline constexpr double no_upper_bound = std::numeric_limits<double>::infinity();
+
+inline constexpr ParameterInfo parameter_table[] = {
+    {"G0", &Parameters::G0, 0, no_upper_bound, true, true, "-", false, false, true, "shear modulus constant"},
+    {"nu", &Parameters::nu, 0, 0.5, false, true, "-", false, false, true, "Poisson's ratio"},
+    {"Mc", &Parameters::Mc, 0, 3, true, false, "-", false, false, true, "critical stress ratio in compression"},
+    {"c", &Parameters::c, 0.7, 1, false, false, "-", false, false, true, "extension/compression ratio of g (convex from 0.7)"},
+    {"e_Gamma", &Parameters::e_Gamma, 0, 2.97, true, true, "-", false, false, true, "critical void ratio at p = 0"},
+    {"lambda_c", &Parameters::lambda_c, 0, no_upper_bound, true, true, "-", false, false, true, "slope of the critical state line"},
+    {"xi", &Parameters::xi, 0, 2, true, false, "-", false, false, true, "exponent of the critical state line"},
+    {"d1", &Parameters::d1, 0, no_upper_bound, true, true, "-", false, false, true, "dilatancy constant"},
+    {"m", &Parameters::m, 0, no_upper_bound, false, true, "-", false, false, true, "dilatancy exponent"},
+    {"h1", &Parameters::h1, 0, no_upper_bound, true, true, "-", false, false, true, "plastic modulus constant"},
+    {"h2", &Parameters::h2, 0, no_upper_bound, false, true, "-", false, false, true, "void-ratio dependence of h"},
+    {"n", &Parameters::n, 0, no_upper_bound, false, true, "-", false, false, true, "plastic modulus exponent"},
+    {"e_A", &Parameters::e_A, 0, no_upper_bound, false, true, "-", true, false, true, "fabric weight in the dilatancy state"},
+    {"F0", &Parameters::F0, 0, no_upper_bound, false, true, "-", true, false, true, "initial fabric norm"},
+    {"k_f", &Parameters::k_f, 0, no_upper_bound, false, true, "-", true, false, true, "rate of fabric evolution"},
+    {"e_max", &Parameters::e_max, 0, 2.97, true, true, "-", false, false, true, "loosest void ratio (above e_min)"},
+    {"e_min", &Parameters::e_min, 0, no_upper_bound, true, true, "-", false, false, true, "densest void ratio"},
+    {"p_min", &Parameters::p_min, 0, no_upper_bound, true, true, "kPa", false, true, true, "pressure floor of a substep (0.5)"},
+    {"h_min", &Parameters::h_min, 0, no_upper_bound, true, true, "-", false, true, false, "floor of h = h1 - h2 e (1e-3)"},
+    {"R_tolerance", &Parameters::R_tolerance, 0, 1e-3, true, false, "-", false, true, false,
+     "below it n follows the strain increment (1e-9)"},
+};
+
+inline constexpr int parameter_table_size = sizeof parameter_table / sizeof parameter_table[0];
+
+constexpr int count_props() {
+  int k = 0;
+  while (k < parameter_table_size && parameter_table[k].props) ++k;
+  return k;
+}
+
+// The umat_ PROPS entries (the first parameter_count rows of the table).
+inline constexpr int parameter_count = count_props();
+
+struct ParameterNames {
+  const char* names[parameter_count];
+  constexpr const char* operator[](int i) const { return names[i]; }
+  constexpr const char* const* begin() const { return names; }
+  constexpr const char* const* end() const { return names + parameter_count; }
+};
+
+constexpr ParameterNames props_names() {
+  ParameterNames n{};
+  for (int i = 0; i < parameter_count; ++i) n.names[i] = parameter_table[i].name;
+  return n;
+}
+
+// Names of the PROPS entries in their order (docs/c-abi.md).
+inline constexpr ParameterNames parameter_names = props_names();
+
+// Checks every value against its range in the table (and e_max > e_min); throws a
+// ParameterRangeError naming the first bad one.
+void validate(const Parameters& p);
 
 double& parameter_by_index(Parameters& p, int i);
 double parameter_by_index(const Parameters& p, int i);
+
+// The table as Markdown, for docs/model.md section 9 (a test keeps the two equal).
+std::string parameter_table_markdown();
 
 // Relative density Dr (0..1) from the void ratio and back.
 inline double relative_density(const Parameters& p, double e) { return (p.e_max - e) / (p.e_max - p.e_min); }
