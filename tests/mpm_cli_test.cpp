@@ -4,9 +4,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <unistd.h>
 
+#include "acst_driver/cli.hpp"
 #include "acst_mpm/cli.hpp"
 
 namespace fs = std::filesystem;
@@ -88,5 +90,40 @@ TEST(MpmCli, AGoodSceneRunsAndReportsWhereItWrote) {
   EXPECT_EQ(c.rc, 0) << c.err;
   EXPECT_NE(c.out.find("3 steps"), std::string::npos) << c.out;
   EXPECT_TRUE(fs::exists(dir / "out" / "summary.json"));
+  fs::remove_all(dir);
+}
+
+// A material failure stops the run with exit 1 and leaves, beside the partial load record, the
+// failing update as an element-test scene; acst_element replays it and fails the same way.
+TEST(MpmCli, AMaterialFailureLeavesAReproducerThatTheElementDriverReplays) {
+  const fs::path dir = scratch("fail");
+  std::ifstream in(std::string(ACST_SOURCE_DIR) + "/data/parameters/toyoura_acst_calibrated.json");
+  nlohmann::json material = nlohmann::json::parse(in);
+  material["integrator"] = {{"max_substeps", 1}};  // any increment that needs substeps fails
+  const nlohmann::json scene = {
+      {"name", "fail"},
+      {"grid", {{"cell_size", 0.25}}},
+      {"materials", {{"sand", material}}},
+      {"bodies", {{{"material", "sand"}, {"x_range", {0, 2}}, {"y_range", {0, 1}}, {"density", 1600},
+                   {"relative_density_pct", 80}, {"bedding_angle_deg", 0}}}},
+      {"gravity", 9.8},
+      {"initial_stress", {{"type", "geostatic"}, {"K0", 0.4}}},
+      {"footing", {{"width", 0.5}, {"centre_x", 1}, {"speed", 5}}},
+      {"stop", {{"S_over_B", 0.2}}}};
+  std::ofstream(dir / "fail.json") << scene.dump();
+  const fs::path out = dir / "out";
+  const Cli c = run({"--quiet", "--no-plot", "--threads", "1", "--output", out.string(), (dir / "fail.json").string()});
+  EXPECT_EQ(c.rc, 1);
+  EXPECT_NE(c.err.find("more substeps than allowed"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("failure_reproducer.json"), std::string::npos) << c.err;
+  ASSERT_TRUE(fs::exists(out / "failure_reproducer.json"));
+  EXPECT_TRUE(fs::exists(out / "load_settlement.failed.csv"));
+  EXPECT_FALSE(fs::exists(out / "load_settlement.csv")) << "no final record after a failure";
+
+  std::ostringstream o, e;
+  const int replay = acst::driver::element_cli(
+      {"--quiet", "--output", (dir / "replay").string(), (out / "failure_reproducer.json").string()}, o, e);
+  EXPECT_EQ(replay, 1) << e.str();
+  EXPECT_NE(e.str().find("more substeps than allowed"), std::string::npos) << e.str();
   fs::remove_all(dir);
 }

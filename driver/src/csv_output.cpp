@@ -6,7 +6,7 @@
 #include "acst/integration/options.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
-#include "units.hpp"
+#include "acst/scene_units.hpp"
 
 namespace acst::driver {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "acst_driver/presets.hpp"
-#include "units.hpp"
+#include "acst/scene_units.hpp"
 
 namespace acst::driver {
 

@@ -6,7 +6,7 @@
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/presets.hpp"
 #include "acst_common/json_fields.hpp"
-#include "units.hpp"
+#include "acst/scene_units.hpp"
 
 namespace acst::driver {
 

@@ -69,7 +69,7 @@ int Material::state_index(const std::string& name) const {
   return -1;
 }
 
-acst_status Material::update(double* stress, double* statev, const double* L, double dt) const {
+acst_status Material::update(double* stress, double* statev, const double* L, double dt, std::string* reproducer) const {
   // Hughes-Winget rotation Q = (I - W/2)^-1 (I + W/2) of the spin W = skew(L) dt (in-plane).
   const double w = 0.5 * (L[1] - L[2]) * dt, d = 1.0 + 0.25 * w * w;
   const double c = (1.0 - 0.25 * w * w) / d, s = w / d;
@@ -90,6 +90,17 @@ acst_status Material::update(double* stress, double* statev, const double* L, do
     if (st.code == ACST_OK) {
       std::memcpy(stress, s_try, sizeof s_try);
       std::memcpy(statev, q_try, sizeof(double) * static_cast<size_t>(state_size_));
+    }
+  }
+  if (st.code != ACST_OK && reproducer) {
+    size_t length = 0;
+    reproducer->clear();
+    if (acst_reproducer(nullptr, &length, model_.get(), stress, statev, de).code == ACST_OK) {
+      reproducer->assign(length, '\0');
+      if (acst_reproducer(reproducer->data(), &length, model_.get(), stress, statev, de).code == ACST_OK)
+        reproducer->resize(length - 1);
+      else
+        reproducer->clear();
     }
   }
   return st;

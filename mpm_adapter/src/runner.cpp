@@ -53,10 +53,15 @@ class Run {
           last_checkpoint = now;
         }
       }
-    } catch (const SimulationError&) {
+    } catch (const SimulationError& e) {
       progress_.close();
       common::write_file_atomically(path("load_settlement.failed.csv"), load_csv_text(scene_, rows()));
-      throw;
+      if (e.reproducer.empty()) throw;
+      common::write_file_atomically(path("failure_reproducer.json"), e.reproducer);
+      throw SimulationError(std::string(e.what()) + "\n(wrote " + path("failure_reproducer.json") +
+                                ": the failing material update as an element test, replayed by acst_element, and " +
+                                path("load_settlement.failed.csv") + ": the load record up to the failure)",
+                            e.reproducer);
     }
     if (st_.period_steps > 0) close_period();
     progress_.close();

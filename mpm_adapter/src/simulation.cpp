@@ -127,11 +127,11 @@ double Simulation::kinetic_energy() const {
   return k;
 }
 
-void Simulation::fail(std::size_t p, const std::string& what) const {
+void Simulation::fail(std::size_t p, const std::string& what, const std::string& reproducer) const {
   char where[96];
   std::snprintf(where, sizeof where, "step %lld, particle %zu at (%.4g, %.4g) m: ", step_count, p, particles.x[p],
                 particles.y[p]);
-  throw SimulationError(where + what);
+  throw SimulationError(where + what, reproducer);
 }
 
 void Simulation::compute_shape_functions() {
@@ -239,7 +239,7 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   Particles& P = particles;
   const int T = w.scatter.threads();
   std::vector<long long> failed(T, -1);
-  std::vector<std::string> messages(T);
+  std::vector<std::string> messages(T), reproducers(T);
   parallel_for(T, P.n, [&](int t, std::size_t p) {
     double L[4] = {0, 0, 0, 0};  // L_ij = dv_i/dx_j: xx xy yx yy
     w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
@@ -258,15 +258,16 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
     e[0] += L[0] * dt_half;
     e[1] += L[3] * dt_half;
     e[2] += 0.5 * (L[1] + L[2]) * dt_half;
-    const acst_status st =
-        materials[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p, L, dt_half);
+    std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
+    const acst_status st = materials[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p, L,
+                                                            dt_half, reproducer);
     if (st.code != ACST_OK && failed[t] < 0) {
       failed[t] = static_cast<long long>(p);
       messages[t] = "material '" + materials[P.material[p]]->name() + "': " + st.message;
     }
   });
   for (int t = 0; t < T; ++t)
-    if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t]);
+    if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
 }
 
 void Simulation::xpic_velocity(int order) {

@@ -142,6 +142,23 @@ const char* acst_diagnostic_name(int i);
  * then update with the strain increment dt sym(L) (engineering shear). */
 acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation);
 
+/* Reproducers: the element-test scene (JSON text, docs/element-tests.md) that replays one
+ * update with `acst_element FILE`: the material written out in full, the whole state, the
+ * strain increment as six strain-controlled rows of one increment. Write it for an update that
+ * failed (before retrying) and a user can replay and report it. Sand models only (ACST,
+ * isotropic); the verification kinds give ACST_INVALID_INPUT.
+ * Buffer rules: *length holds the size of `buffer` on entry and the size the text needs
+ * (terminating NUL included) on return. With buffer NULL only the size is returned (ACST_OK);
+ * a buffer too small gives ACST_INVALID_INPUT and nothing is written. */
+acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* model, const double* stress,
+                            const double* statev, const double* dstrain);
+
+/* The same for a umat_ host, from exactly what umat_ receives (NTENS 6 or 4, PROPS as for
+ * umat_, DROT may be NULL): the fabric turned as umat_ turns it, so the scene replays what
+ * umat_ computed. */
+acst_status acst_umat_reproducer(char* buffer, size_t* length, const double* stress, const double* statev,
+                                 const double* dstran, int ntens, const double* props, int nprops, const double* drot);
+
 /* Abaqus-compatible entry point for the ACST model only (standard UMAT argument list; see
  * docs/c-abi.md for the PROPS and STATEV layouts). NTENS = 6 (3-D) or 4 (plane strain / axisymmetric: 11, 22, 33, 12).
  * Failures set PNEWDT = suggested step factor (< 1) and leave STRESS and STATEV unchanged. */

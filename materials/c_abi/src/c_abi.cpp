@@ -175,4 +175,14 @@ acst_status acst_rotate_state(double* stress, double* statev, const acst_model* 
   return ok_status();
 }
 
+acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* model, const double* stress,
+                            const double* statev, const double* dstrain) {
+  ACST_REQUIRE(length && model && stress && dstrain && (statev || state_size_of(*model) == 0),
+               "acst_reproducer: a required pointer argument is NULL");
+  ACST_GUARD({
+    return text_to_buffer(model->kind->reproducer(stress, statev, dstrain).dump(2) + "\n", buffer, length,
+                          "acst_reproducer");
+  })
+}
+
 }  // extern "C"

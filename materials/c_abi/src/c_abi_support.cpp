@@ -72,6 +72,20 @@ bool entry_ok(const Sym& stress, bool state_ok, const Sym& strain_increment, int
   return rep.status == integration::Status::ok;
 }
 
+acst_status text_to_buffer(const std::string& text, char* buffer, size_t* length, const char* function) {
+  const size_t needed = text.size() + 1;
+  const size_t room = *length;
+  *length = needed;
+  if (!buffer) return ok_status();
+  if (room < needed)
+    return make_status(ACST_INVALID_INPUT,
+                       std::string(function) + ": the buffer of " + std::to_string(room) + " bytes is too small; the text needs " +
+                           std::to_string(needed) + " (nothing was written)",
+                       1.0);
+  std::memcpy(buffer, text.c_str(), needed);
+  return ok_status();
+}
+
 void reference_diagnostics(double* out, const Sym& stress, const ElasticModuli& m) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double v[ACST_NDIAGNOSTICS] = {trace(stress) / 3.0, reference::equivalent_stress(stress), nan, nan, nan, nan,

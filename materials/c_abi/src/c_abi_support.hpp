@@ -22,6 +22,9 @@ acst_status update_point(double* stress, double* statev, double* tangent, const 
 // says why) for a non-finite increment, stress or state.
 bool entry_ok(const Sym& stress, bool state_ok, const Sym& strain_increment, integration::Report& rep);
 
+// Copies `text` into a host's buffer with snprintf-like rules (acst.h, acst_reproducer).
+acst_status text_to_buffer(const std::string& text, char* buffer, size_t* length, const char* function);
+
 // Diagnostics of a verification kind: p, q, G and K; the sand-specific entries are NaN.
 void reference_diagnostics(double* out, const Sym& stress, const ElasticModuli& moduli);
 

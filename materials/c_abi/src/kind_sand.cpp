@@ -6,6 +6,7 @@
 #include "abi_convention.hpp"
 #include "acst/json_input.hpp"
 #include "acst/material.hpp"
+#include "acst/reproducer.hpp"
 #include "c_abi_support.hpp"
 #include "model_kind.hpp"
 #include "state_layout.hpp"
@@ -48,6 +49,11 @@ class SandKind final : public ModelKind {
     const double v[ACST_NDIAGNOSTICS] = {d.p,           d.q,   d.R, d.sin3theta, d.psi, d.zeta, d.A,
                                          d.fabric_norm, d.critical_void_ratio, d.D, d.Kp, d.G, d.K};
     std::memcpy(out, v, sizeof v);
+  }
+
+  nlohmann::json reproducer(const double* stress, const double* statev, const double* dstrain) const override {
+    return update_reproducer(material_, state_of(stress, statev), strain_to_model(dstrain),
+                             "One-increment reproducer of a material update written through the C ABI");
   }
 
   acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const override {

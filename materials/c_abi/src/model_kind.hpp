@@ -35,6 +35,9 @@ class ModelKind {
   virtual void diagnostics(double* out, const double* stress, const double* statev) const = 0;
   // Relative density -> void ratio; kinds without a void ratio refuse.
   virtual acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const;
+  // The element-test scene replaying one update (acst/reproducer.hpp); kinds the element driver
+  // cannot run throw InputError.
+  virtual nlohmann::json reproducer(const double* stress, const double* statev, const double* dstrain) const;
 };
 
 // Reads a material document and builds its kind; throws InputError naming the JSON path.

@@ -36,6 +36,11 @@ acst_status ModelKind::void_ratio_from_relative_density(double*, double) const {
                      1.0);
 }
 
+nlohmann::json ModelKind::reproducer(const double*, const double*, const double*) const {
+  throw InputError(std::string("reproducers are written for the sand models (ACST, isotropic) that acst_element runs, not for '") +
+                   name() + "'");
+}
+
 std::unique_ptr<const ModelKind> make_model_kind(const std::string& json_text) {
   const nlohmann::json document = model_document(json_text);
   if (!document.contains("model")) return kinds[0].make(document);

@@ -14,9 +14,12 @@
 // engineering shear strain, DDSDDE column-major.
 #include <Eigen/LU>  // determinant of DROT
 #include <algorithm>
+#include <exception>
+#include <string>
 
 #include "abi_convention.hpp"
 #include "acst.h"
+#include "acst/reproducer.hpp"
 #include "c_abi_support.hpp"
 #include "state_layout.hpp"
 
@@ -57,6 +60,26 @@ acst::Material material_from_props(const double* props, int nprops) {
   return acst::Material(p, o);
 }
 
+// What umat_ integrates: the material from PROPS, stress and strain increment padded to six
+// components, and a copy of the state with the fabric turned by DROT where PROPS(22) asks.
+struct UmatPoint {
+  acst::Material material;
+  double stress[6] = {0, 0, 0, 0, 0, 0}, dstrain[6] = {0, 0, 0, 0, 0, 0}, state[ACST_NSTATV] = {};
+};
+
+UmatPoint umat_point(const double* stress, const double* statev, const double* dstran, int nt, const double* props,
+                     int nprops, const double* drot) {
+  UmatPoint u{material_from_props(props, nprops)};
+  std::copy(stress, stress + nt, u.stress);
+  std::copy(dstran, dstran + nt, u.dstrain);
+  std::copy(statev, statev + ACST_NSTATV, u.state);
+  if (rotates_with_drot(props, nprops)) {
+    const Eigen::Matrix3d R = rotation_increment(drot);
+    if (!R.isIdentity(0.0)) acst::abi::rotate_tensorial_state(u.state, acst::abi::sand_state_layout, R);
+  }
+  return u;
+}
+
 }  // namespace
 
 extern "C" void umat_(double* stress, double* statev, double* ddsdde, double*, double*, double*, double*, double*,
@@ -74,28 +97,49 @@ extern "C" void umat_(double* stress, double* statev, double* ddsdde, double*, d
       if (pnewdt) *pnewdt = unrecoverable;
       return;
     }
-    const acst::Material mat = material_from_props(props, *nprops);
-    double s6[6] = {0, 0, 0, 0, 0, 0}, d6[6] = {0, 0, 0, 0, 0, 0}, tangent[36];
-    std::copy(stress, stress + nt, s6);
-    std::copy(dstran, dstran + nt, d6);
     // The update works on a copy of the state, so a failure leaves STATEV as it came.
-    double state[ACST_NSTATV];
-    std::copy(statev, statev + ACST_NSTATV, state);
-    if (rotates_with_drot(props, *nprops)) {
-      const Eigen::Matrix3d R = rotation_increment(drot);
-      if (!R.isIdentity(0.0)) acst::abi::rotate_tensorial_state(state, acst::abi::sand_state_layout, R);
-    }
+    UmatPoint u = umat_point(stress, statev, dstran, nt, props, *nprops, drot);
+    double tangent[36];
     acst::integration::Report rep;
-    const acst_status st = acst::abi::update_point(s6, state, tangent, mat, d6, rep);
+    const acst_status st = acst::abi::update_point(u.stress, u.state, tangent, u.material, u.dstrain, rep);
     if (st.code != ACST_OK) {
       *pnewdt = st.code == ACST_STEP_REDUCTION ? std::min(*pnewdt, st.suggested_step_factor) : unrecoverable;
       return;
     }
-    std::copy(state, state + ACST_NSTATV, statev);
-    std::copy(s6, s6 + nt, stress);
+    std::copy(u.state, u.state + ACST_NSTATV, statev);
+    std::copy(u.stress, u.stress + nt, stress);
     for (int i = 0; i < nt; ++i)
       for (int j = 0; j < nt; ++j) ddsdde[i + j * nt] = tangent[6 * i + j];
   } catch (...) {
     if (pnewdt) *pnewdt = unrecoverable;
+  }
+}
+
+extern "C" acst_status acst_umat_reproducer(char* buffer, size_t* length, const double* stress, const double* statev,
+                                            const double* dstran, int ntens, const double* props, int nprops,
+                                            const double* drot) {
+  using acst::abi::make_status;
+  if (!length || !stress || !statev || !dstran || !props)
+    return make_status(ACST_INVALID_INPUT, "acst_umat_reproducer: a required pointer argument is NULL", 1.0);
+  if ((ntens != 6 && ntens != 4) || nprops < acst::parameter_count)
+    return make_status(ACST_INVALID_INPUT,
+                       "acst_umat_reproducer: NTENS must be 6 or 4 and NPROPS at least " +
+                           std::to_string(acst::parameter_count),
+                       1.0);
+  try {
+    const UmatPoint u = umat_point(stress, statev, dstran, ntens, props, nprops, drot);
+    acst::State start;
+    start.stress = acst::abi::stress_to_model(u.stress);
+    acst::abi::fill_state(start, u.state);
+    const std::string text =
+        acst::update_reproducer(u.material, start, acst::abi::strain_to_model(u.dstrain),
+                                "One-increment reproducer of a umat_ call (NTENS " + std::to_string(ntens) + ")")
+            .dump(2) +
+        "\n";
+    return acst::abi::text_to_buffer(text, buffer, length, "acst_umat_reproducer");
+  } catch (const std::exception& e) {
+    return make_status(ACST_INVALID_INPUT, std::string("acst_umat_reproducer: ") + e.what(), 1.0);
+  } catch (...) {
+    return make_status(ACST_INTERNAL_ERROR, "acst_umat_reproducer: unknown exception", 1.0);
   }
 }

@@ -45,8 +45,10 @@ class Material {
   // Plane-strain update over dt from the velocity gradient L (row-major 2x2, L_ij = dv_i/dx_j):
   // rotates, then integrates the strain increment, retrying in up to 64 sub-increments when the
   // integrator asks for a smaller one. Returns ACST_OK or the failing status (stress and state
-  // then keep their last good values).
-  acst_status update(double* stress, double* statev, const double* L, double dt) const;
+  // then keep their last good values, rotated); on a failure `reproducer`, when given, receives
+  // the element-test scene that replays the failing increment (acst_reproducer; "" for the
+  // verification kinds, which the element driver cannot run).
+  acst_status update(double* stress, double* statev, const double* L, double dt, std::string* reproducer = nullptr) const;
 
  private:
   std::string name_;

@@ -17,6 +17,8 @@ namespace acst::mpm {
 
 struct SimulationError : std::runtime_error {
   using std::runtime_error::runtime_error;
+  SimulationError(const std::string& what, std::string replay) : std::runtime_error(what), reproducer(std::move(replay)) {}
+  std::string reproducer;  // for a material failure: the scene acst_element replays ("" otherwise)
 };
 
 enum class ParticleUpdate { FLIP, PIC, XPIC };
@@ -132,7 +134,7 @@ class Simulation {
   int wall_node(double coordinate, double origin) const;
   void fold(double* field, Component c) const;
   int wall_of(int i, int j) const;
-  [[noreturn]] void fail(std::size_t particle, const std::string& what) const;
+  [[noreturn]] void fail(std::size_t particle, const std::string& what, const std::string& reproducer = "") const;
 };
 
 }  // namespace acst::mpm
