@@ -47,8 +47,8 @@ Simulation build_simulation(const Scene& s) {
 
   Walls walls;
   walls.left = x_min, walls.right = x_max, walls.base = y_min;
-  walls.base_fixed = s.base == "fixed";
-  walls.sides = s.sides == "fixed" ? SideWall::fixed : (s.sides == "none" ? SideWall::none : SideWall::smooth);
+  walls.base_fixed = s.base_fixed;
+  walls.sides = s.sides;
 
   std::vector<std::shared_ptr<const Material>> materials;
   std::map<std::string, int> index;
@@ -70,14 +70,15 @@ Simulation build_simulation(const Scene& s) {
   }
   sim.particle_half_width = 0.5 / ppc;
   if (s.footing) {
-    sim.footing.active = true;
-    sim.footing.centre_x = s.footing->centre_x;
-    sim.footing.width = s.footing->width;
-    sim.footing.base_y = column_top(s, s.footing->centre_x);
-    sim.footing.speed = s.footing->speed;
-    sim.footing.inclination = s.footing->inclination_deg * pi / 180.0;
-    sim.footing.rough = s.footing->rough;
-    if (!std::isfinite(sim.footing.base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
+    Footing::Spec f;
+    f.centre_x = s.footing->centre_x;
+    f.width = s.footing->width;
+    f.base_y = column_top(s, s.footing->centre_x);
+    f.speed = s.footing->speed;
+    f.inclination = s.footing->inclination_deg * pi / 180.0;
+    f.rough = s.footing->rough;
+    if (!std::isfinite(f.base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
+    sim.footing = Footing(f);
   }
 
   Particles& P = sim.particles;

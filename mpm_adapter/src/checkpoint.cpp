@@ -78,9 +78,9 @@ void run_fields(IO& io, Sim& sim, State& st) {
   io.pod(sim.step_count);
   io.pod(sim.time);
   io.pod(sim.dt);
-  io.pod(sim.footing_dx);
-  io.pod(sim.footing_dy);
-  io.pod(sim.footing_work);
+  io.pod(sim.footing.motion().dx);
+  io.pod(sim.footing.motion().dy);
+  io.pod(sim.footing.motion().work);
   io.vec(st.history);
   io.vec(st.every_step);
   io.pod(st.sum_V);

@@ -13,7 +13,7 @@
 #include "acst_mpm/checkpoint.hpp"
 #include "acst_mpm/fields.hpp"
 #include "acst_mpm/output.hpp"
-#include "scatter.hpp"
+#include "acst_mpm/scatter.hpp"
 
 namespace acst::mpm {
 namespace fs = std::filesystem;
@@ -82,7 +82,7 @@ class Run {
   common::ProgressLine progress_{std::cerr, !opt_.quiet, 0.2, 1.0};
 
   std::string path(const std::string& name) const { return (fs::path(opt_.output_dir) / name).string(); }
-  double settlement() const { return -sim_.footing_dy; }
+  double settlement() const { return sim_.footing.settlement(); }
   double S_over_B() const { return settlement() / B_; }
   const std::vector<LoadRecord>& rows() const { return scene_.output.every_step_csv ? st_.every_step : st_.history; }
 
@@ -108,7 +108,7 @@ class Run {
     r.H_kN_per_m = H;
     r.q_kPa = V / B_;
     r.kinetic_J_per_m = sim_.kinetic_energy();
-    r.footing_work_J_per_m = sim_.footing_work;
+    r.footing_work_J_per_m = sim_.footing.motion().work;
     return r;
   }
 

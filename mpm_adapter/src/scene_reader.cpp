@@ -184,11 +184,18 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   }
   if (j.contains("walls")) {
     f::allow_keys(j["walls"], {"base", "sides"}, "/walls");
-    if (j["walls"].contains("base")) s.base = f::string(j["walls"]["base"], "/walls/base");
-    if (j["walls"].contains("sides")) s.sides = f::string(j["walls"]["sides"], "/walls/sides");
-    if (s.base != "fixed" && s.base != "none") f::fail("/walls/base", "'" + s.base + "' is not one of fixed, none");
-    if (s.sides != "smooth" && s.sides != "fixed" && s.sides != "none")
-      f::fail("/walls/sides", "'" + s.sides + "' is not one of smooth, fixed, none");
+    if (j["walls"].contains("base")) {
+      const std::string base = f::string(j["walls"]["base"], "/walls/base");
+      if (base != "fixed" && base != "none") f::fail("/walls/base", "'" + base + "' is not one of fixed, none");
+      s.base_fixed = base == "fixed";
+    }
+    if (j["walls"].contains("sides")) {
+      const std::string sides = f::string(j["walls"]["sides"], "/walls/sides");
+      if (sides == "smooth") s.sides = SideWall::smooth;
+      else if (sides == "fixed") s.sides = SideWall::fixed;
+      else if (sides == "none") s.sides = SideWall::none;
+      else f::fail("/walls/sides", "'" + sides + "' is not one of smooth, fixed, none");
+    }
   }
   if (j.contains("surcharge_kPa")) s.surcharge = f::number(j["surcharge_kPa"], "/surcharge_kPa", {0.0, 1e5}, "kPa");
   if (j.contains("footing")) s.footing = read_footing(j["footing"], "/footing");

@@ -6,13 +6,11 @@
 #include <limits>
 
 #include "acst_mpm/shape_functions.hpp"
-#include "scatter.hpp"
 
 namespace acst::mpm {
 namespace {
 
 constexpr double kilo = 1000.0;  // kPa * m -> N/m: the one unit conversion of the core
-constexpr int free_node = -1;
 
 }  // namespace
 
@@ -35,36 +33,8 @@ double Particles::volume(std::size_t p) const {
   return volume_initial[p] * (f[0] * f[3] - f[1] * f[2]);
 }
 
-struct Simulation::Work {
-  Scatter scatter;
-  // Shape-function cache of every particle: first node and 4 weights/slopes per axis.
-  std::vector<int> first_i, first_j;
-  std::vector<double> wx, wy, dwx, dwy;
-  // Nodal fields: mass, lumped velocity v_L, force, acceleration, a second velocity field.
-  std::vector<double> mass, vx, vy, fx, fy, ax, ay, ux, uy, xpx, xpy;
-  // Constraints per node and component: the reaction set (or free_node) and the velocity.
-  std::vector<int> set_x, set_y;
-  std::vector<double> fix_vx, fix_vy;
-  // The body's own mass and force before the walls' mirror images are folded in.
-  std::vector<double> mass_body, fx_body, fy_body;
-  // Per-particle scratch: velocities mapped from the grid.
-  std::vector<double> pvx, pvy;
-  int nx = 0;
-
-  // f(node, S, dS/dx, dS/dy) over particle p's 4 x 4 stencil.
-  template <class F>
-  void stencil(std::size_t p, F&& f) const {
-    const int fi = first_i[p], fj = first_j[p];
-    for (int b = 0; b < 4; ++b) {
-      const double wyb = wy[4 * p + b], dwyb = dwy[4 * p + b];
-      const std::size_t row = static_cast<std::size_t>(fj + b) * nx + fi;
-      for (int a = 0; a < 4; ++a) f(row + a, wx[4 * p + a] * wyb, dwx[4 * p + a] * wyb, wx[4 * p + a] * dwyb);
-    }
-  }
-};
-
 Simulation::Simulation(Grid g, Walls w, Settings s, std::vector<std::shared_ptr<const Material>> mats)
-    : grid(g), walls(w), settings(s), materials(std::move(mats)), work_(std::make_shared<Work>()) {}
+    : grid(g), walls(w), settings(s), materials(std::move(mats)) {}
 
 bool Simulation::is_xpic_step(long long step) const {
   if (settings.update == ParticleUpdate::PIC) return true;
@@ -73,13 +43,10 @@ bool Simulation::is_xpic_step(long long step) const {
 }
 
 void Simulation::prepare() {
-  Work& w = *work_;
+  StepScratch& w = work_;
   const std::size_t N = grid.nodes(), n = particles.n;
   for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
-  w.set_x.assign(N, free_node);
-  w.set_y.assign(N, free_node);
-  w.fix_vx.assign(N, 0.0);
-  w.fix_vy.assign(N, 0.0);
+  w.constraints.resize(N);
   w.first_i.assign(n, 0);
   w.first_j.assign(n, 0);
   for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
@@ -95,8 +62,8 @@ void Simulation::prepare() {
 void Simulation::refresh_wave_speeds() {
   Particles& P = particles;
   const std::size_t n = P.n;
-  std::vector<std::string> errors(work_->scatter.threads());
-  parallel_for(work_->scatter.threads(), n, [&](int t, std::size_t p) {
+  std::vector<std::string> errors(work_.scatter.threads());
+  parallel_for(work_.scatter.threads(), n, [&](int t, std::size_t p) {
     try {
       const double J = P.volume(p) / P.volume_initial[p];
       P.wave_speed[p] = materials[P.material[p]]->wave_speed(&P.stress[6 * p],
@@ -135,7 +102,7 @@ void Simulation::fail(std::size_t p, const std::string& what, const std::string&
 }
 
 void Simulation::compute_shape_functions() {
-  Work& w = *work_;
+  StepScratch& w = work_;
   Particles& P = particles;
   const double h = grid.h, l = particle_half_width;
   std::vector<long long> off_grid(w.scatter.threads(), -1);
@@ -159,83 +126,25 @@ void Simulation::compute_shape_functions() {
     if (p >= 0) fail(static_cast<std::size_t>(p), "left the grid (the grid must reach two cells past every particle)");
 }
 
-void Simulation::update_constraints() {
-  Work& w = *work_;
-  const double h = grid.h, tol = 1e-9 * h;
-  std::fill(w.set_x.begin(), w.set_x.end(), free_node);
-  std::fill(w.set_y.begin(), w.set_y.end(), free_node);
-  if (!footing.active) return;
-  const double vfx = footing.speed * std::sin(footing.inclination), vfy = -footing.speed * std::cos(footing.inclination);
-  const double centre = footing.centre_x + footing_dx, half = 0.5 * footing.width;
-  const long long j_base = std::llround((footing_base_y() - grid.y0) / h);
-  for (int j = static_cast<int>(std::max(0LL, j_base)); j < grid.ny; ++j)
-    for (int i = 0; i < grid.nx; ++i) {
-      const double x = grid.x0 + i * h;
-      if (std::fabs(x - centre) > half + tol) continue;
-      const std::size_t k = static_cast<std::size_t>(j) * grid.nx + i;
-      w.set_y[k] = reaction_footing;
-      w.fix_vy[k] = vfy;
-      if (footing.rough) {
-        w.set_x[k] = reaction_footing;
-        w.fix_vx[k] = vfx;
-      }
-    }
-}
-
-int Simulation::wall_node(double coordinate, double origin) const {
-  return static_cast<int>(std::lround((coordinate - origin) / grid.h));
-}
-
-// Rigid walls as symmetry planes: the grid field of the body's mirror image beyond the wall is
-// folded onto the interior nodes (odd components change sign), then mirrored back to the
-// exterior nodes. An odd velocity component is zero on the wall; a smooth wall keeps the
-// tangential component even. This gives the nodes next to the wall the force of the missing
-// particles, which plain node fixity leaves unbalanced with B-splines (docs/mpm.md).
-void Simulation::fold(double* q, Component c) const {
-  const int nx = grid.nx, ny = grid.ny;
-  auto at = [&](int i, int j) -> double& { return q[static_cast<std::size_t>(j) * nx + i]; };
-  // node(k): the node k steps inward from the wall (k < 0: beyond it); `reach` exterior nodes.
-  auto fold_line = [](double s, int reach, auto&& node) {
-    for (int k = 1; k <= reach; ++k) node(k) += s * node(-k);
-    node(0) *= 1.0 + s;
-    for (int k = 1; k <= reach; ++k) node(-k) = s * node(k);
-  };
-  if (walls.sides != SideWall::none) {
-    const double s = c == Component::scalar ? 1.0 : (c == Component::x || walls.sides == SideWall::fixed ? -1.0 : 1.0);
-    const int il = wall_node(walls.left, grid.x0), ir = wall_node(walls.right, grid.x0);
-    for (int j = 0; j < ny; ++j) {
-      fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
-      fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
-    }
-  }
-  if (walls.base_fixed) {
-    const double s = c == Component::scalar ? 1.0 : -1.0;  // no slip: both components odd
-    const int jb = wall_node(walls.base, grid.y0);
-    for (int i = 0; i < nx; ++i) fold_line(s, std::min(jb, ny - 1 - jb), [&](int k) -> double& { return at(i, jb + k); });
-  }
-}
-
-// Which wall's mirror image acts on node (i, j), if any (those within the stencil's reach).
-int Simulation::wall_of(int i, int j) const {
-  if (walls.base_fixed && j <= wall_node(walls.base, grid.y0) + 2) return reaction_base;
-  if (walls.sides != SideWall::none && i <= wall_node(walls.left, grid.x0) + 2) return reaction_left;
-  if (walls.sides != SideWall::none && i >= wall_node(walls.right, grid.x0) - 2) return reaction_right;
-  return free_node;
+void Simulation::apply_constraints() {
+  work_.constraints.clear();
+  footing.constrain(grid, work_.constraints);
+  nodal_velocity(work_.ax.data(), work_.ay.data(), work_.vx.data(), work_.vy.data());
 }
 
 void Simulation::nodal_velocity(const double* px, const double* py, double* vx, double* vy) {
-  const Work& w = *work_;
+  const StepScratch& w = work_;
   for (std::size_t i = 0; i < grid.nodes(); ++i) {
     const double m = w.mass[i];
     vx[i] = m > 0.0 ? px[i] / m : 0.0;
     vy[i] = m > 0.0 ? py[i] / m : 0.0;
-    if (w.set_x[i] != free_node) vx[i] = w.fix_vx[i];
-    if (w.set_y[i] != free_node) vy[i] = w.fix_vy[i];
+    if (w.constraints.set_x[i] != free_node) vx[i] = w.constraints.vx[i];
+    if (w.constraints.set_y[i] != free_node) vy[i] = w.constraints.vy[i];
   }
 }
 
 void Simulation::update_stress(const double* vx, const double* vy, double dt_half) {
-  Work& w = *work_;
+  StepScratch& w = work_;
   Particles& P = particles;
   const int T = w.scatter.threads();
   std::vector<long long> failed(T, -1);
@@ -271,7 +180,7 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
 }
 
 void Simulation::xpic_velocity(int order) {
-  Work& w = *work_;
+  StepScratch& w = work_;
   Particles& P = particles;
   const std::size_t N = grid.nodes();
   // v(m) = sum_k dv(k), dv(1) = v_L, dv(k) = dv(k-1) - S+S dv(k-1), constrained parts of dv(k>1) zero.
@@ -296,29 +205,42 @@ void Simulation::xpic_velocity(int order) {
         f[1][i] += S * my;
       });
     });
-    fold(w.fx.data(), Component::x);
-    fold(w.fy.data(), Component::y);
+    fold(w.fx.data(), FieldKind::x);
+    fold(w.fy.data(), FieldKind::y);
     for (std::size_t i = 0; i < N; ++i) {
       const double m = w.mass[i];
-      dvx[i] = (m > 0.0 && w.set_x[i] == free_node) ? dvx[i] - w.fx[i] / m : 0.0;
-      dvy[i] = (m > 0.0 && w.set_y[i] == free_node) ? dvy[i] - w.fy[i] / m : 0.0;
+      dvx[i] = (m > 0.0 && w.constraints.set_x[i] == free_node) ? dvx[i] - w.fx[i] / m : 0.0;
+      dvy[i] = (m > 0.0 && w.constraints.set_y[i] == free_node) ? dvy[i] - w.fy[i] / m : 0.0;
       w.xpx[i] += dvx[i];
       w.xpy[i] += dvy[i];
     }
   }
 }
 
+// One step of update-stress-average (docs/mpm.md, "One step"): the phases in their order.
 void Simulation::step() {
-  Work& w = *work_;
-  Particles& P = particles;
-  const std::size_t n = P.n, N = grid.nodes();
-  const int T = w.scatter.threads();
+  refresh_time_step();
+  compute_shape_functions();
+  map_mass_and_momentum();
+  apply_constraints();
+  update_stress(work_.vx.data(), work_.vy.data(), 0.5 * dt);  // first half, with v_L
+  internal_force_and_reactions();
+  update_particles();
+  remap_momentum();
+  update_stress(work_.ux.data(), work_.uy.data(), 0.5 * dt);  // second half, with the re-mapped v
+  advance_boundaries();
+}
+
+void Simulation::refresh_time_step() {
   if (step_count > 0 && step_count % settings.wave_speed_every == 0) refresh_wave_speeds();
   dt = stable_time_step();
+}
 
-  compute_shape_functions();
-
-  // 2. Mass and momentum to the grid; lumped velocity with the constraints applied.
+// Mass and momentum to the grid, the walls' mirror images folded in.
+void Simulation::map_mass_and_momentum() {
+  StepScratch& w = work_;
+  Particles& P = particles;
+  const std::size_t n = P.n;
   {
     double* out[3] = {w.mass.data(), w.ax.data(), w.ay.data()};
     w.scatter.run(3, out, n, [&](std::size_t p, double* const* f) {
@@ -331,16 +253,17 @@ void Simulation::step() {
     });
   }
   w.mass_body = w.mass;
-  fold(w.mass.data(), Component::scalar);
-  fold(w.ax.data(), Component::x);
-  fold(w.ay.data(), Component::y);
-  update_constraints();
-  nodal_velocity(w.ax.data(), w.ay.data(), w.vx.data(), w.vy.data());
+  fold(w.mass.data(), FieldKind::scalar);
+  fold(w.ax.data(), FieldKind::x);
+  fold(w.ay.data(), FieldKind::y);
+}
 
-  // 3. First half of the stress update with v_L.
-  update_stress(w.vx.data(), w.vy.data(), 0.5 * dt);
-
-  // 4. Internal force, weight and surcharge; constrained components give the reactions.
+// Internal force, weight and surcharge; the walls' and the constraints' reactions; a = f/m.
+void Simulation::internal_force_and_reactions() {
+  StepScratch& w = work_;
+  Particles& P = particles;
+  const std::size_t n = P.n;
+  const std::size_t N = grid.nodes();
   {
     double* out[2] = {w.fx.data(), w.fy.data()};
     const double g = settings.gravity, q = surcharge;
@@ -360,29 +283,35 @@ void Simulation::step() {
   reaction.fill(Reaction{});
   w.fx_body = w.fx;
   w.fy_body = w.fy;
-  fold(w.fx.data(), Component::x);
-  fold(w.fy.data(), Component::y);
+  fold(w.fx.data(), FieldKind::x);
+  fold(w.fy.data(), FieldKind::y);
   for (std::size_t i = 0; i < N; ++i) {
     if (w.mass[i] <= 0.0) {
       w.ax[i] = w.ay[i] = 0.0;
       continue;
     }
     const double share = w.mass_body[i] / w.mass[i];
-    const int wall = wall_of(static_cast<int>(i % grid.nx), static_cast<int>(i / grid.nx));
+    const int wall = walls.wall_of(static_cast<int>(i % grid.nx), static_cast<int>(i / grid.nx), grid);
     if (wall != free_node) {
       reaction[wall].fx += share * w.fx[i] - w.fx_body[i];
       reaction[wall].fy += share * w.fy[i] - w.fy_body[i];
     }
-    if (w.set_x[i] != free_node) reaction[w.set_x[i]].fx -= share * w.fx[i];
-    if (w.set_y[i] != free_node) reaction[w.set_y[i]].fy -= share * w.fy[i];
+    if (w.constraints.set_x[i] != free_node) reaction[w.constraints.set_x[i]].fx -= share * w.fx[i];
+    if (w.constraints.set_y[i] != free_node) reaction[w.constraints.set_y[i]].fy -= share * w.fy[i];
     // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
-    if (w.set_x[i] != free_node) w.fx[i] = 0.0;
-    if (w.set_y[i] != free_node) w.fy[i] = 0.0;
+    if (w.constraints.set_x[i] != free_node) w.fx[i] = 0.0;
+    if (w.constraints.set_y[i] != free_node) w.fy[i] = 0.0;
     w.ax[i] = w.fx[i] / w.mass[i];
     w.ay[i] = w.fy[i] / w.mass[i];
   }
+}
 
-  // 5. Particle velocities and positions: FLIP, or XPIC(m) (PIC = XPIC(1)), with damping.
+// Particle velocities and positions: FLIP, or XPIC(m) (PIC = XPIC(1)), with damping.
+void Simulation::update_particles() {
+  StepScratch& w = work_;
+  Particles& P = particles;
+  const std::size_t n = P.n;
+  const int T = w.scatter.threads();
   const bool xpic = is_xpic_step(step_count);
   if (xpic) xpic_velocity(settings.update == ParticleUpdate::PIC ? 1 : settings.xpic_order);
   const double ag = settings.grid_damping, ap = settings.particle_damping;
@@ -412,8 +341,13 @@ void Simulation::step() {
     P.x[p] += (svx + 0.5 * (vx1 - vx0)) * dt;
     P.y[p] += (svy + 0.5 * (vy1 - vy0)) * dt;
   });
+}
 
-  // 6. Momentum re-extrapolated from the new particle velocities; second half stress update.
+// Momentum re-extrapolated from the new particle velocities; the constrained velocity field.
+void Simulation::remap_momentum() {
+  StepScratch& w = work_;
+  Particles& P = particles;
+  const std::size_t n = P.n;
   {
     double* out[2] = {w.ux.data(), w.uy.data()};
     w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
@@ -424,18 +358,14 @@ void Simulation::step() {
       });
     });
   }
-  fold(w.ux.data(), Component::x);
-  fold(w.uy.data(), Component::y);
+  fold(w.ux.data(), FieldKind::x);
+  fold(w.uy.data(), FieldKind::y);
   nodal_velocity(w.ux.data(), w.uy.data(), w.ux.data(), w.uy.data());
-  update_stress(w.ux.data(), w.uy.data(), 0.5 * dt);
+}
 
-  // Footing kinematics and the work it does on the soil.
-  if (footing.active) {
-    const double vfx = footing.speed * std::sin(footing.inclination), vfy = -footing.speed * std::cos(footing.inclination);
-    footing_work += (reaction[reaction_footing].fx * vfx + reaction[reaction_footing].fy * vfy) * dt;
-    footing_dx += vfx * dt;
-    footing_dy += vfy * dt;
-  }
+// The footing moves on (and counts its work); then the clock.
+void Simulation::advance_boundaries() {
+  footing.advance(reaction[reaction_footing], dt);
   time += dt;
   ++step_count;
 }

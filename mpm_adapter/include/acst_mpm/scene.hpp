@@ -56,7 +56,8 @@ struct Scene {
   std::vector<BodySpec> bodies;
   double gravity = 0, K0 = 0.5;
   bool geostatic = false;        // initial stress from the overburden, sigma_h = K0 sigma_v
-  std::string base = "fixed", sides = "smooth";
+  bool base_fixed = true;              // walls/base: "fixed" or "none"
+  SideWall sides = SideWall::smooth;   // walls/sides: "smooth", "fixed" or "none"
   double surcharge = 0;          // kPa on the top surface outside the footing
   std::optional<FootingSpec> footing;
   Settings solver;

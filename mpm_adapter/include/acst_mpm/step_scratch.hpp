@@ -1,0 +1,39 @@
+#pragma once
+// What one MPM step works with besides the particles: the particles' shape functions, the nodal
+// fields, the nodal constraints and per-thread scatter buffers. Rebuilt by Simulation::prepare;
+// a copy is a full copy (each Simulation owns its own).
+#include <cstddef>
+#include <vector>
+
+#include "acst_mpm/grid.hpp"
+#include "acst_mpm/scatter.hpp"
+
+namespace acst::mpm {
+
+struct StepScratch {
+  Scatter scatter;
+  // Shape-function cache of every particle: first node and 4 weights/slopes per axis.
+  std::vector<int> first_i, first_j;
+  std::vector<double> wx, wy, dwx, dwy;
+  // Nodal fields: mass, lumped velocity v_L, force, acceleration, a second velocity field.
+  std::vector<double> mass, vx, vy, fx, fy, ax, ay, ux, uy, xpx, xpy;
+  NodeConstraints constraints;
+  // The body's own mass and force before the walls' mirror images are folded in.
+  std::vector<double> mass_body, fx_body, fy_body;
+  // Per-particle scratch: velocities mapped from the grid.
+  std::vector<double> pvx, pvy;
+  int nx = 0;
+
+  // f(node, S, dS/dx, dS/dy) over particle p's 4 x 4 stencil.
+  template <class F>
+  void stencil(std::size_t p, F&& f) const {
+    const int fi = first_i[p], fj = first_j[p];
+    for (int b = 0; b < 4; ++b) {
+      const double wyb = wy[4 * p + b], dwyb = dwy[4 * p + b];
+      const std::size_t row = static_cast<std::size_t>(fj + b) * nx + fi;
+      for (int a = 0; a < 4; ++a) f(row + a, wx[4 * p + a] * wyb, dwx[4 * p + a] * wyb, wx[4 * p + a] * dwyb);
+    }
+  }
+};
+
+}  // namespace acst::mpm

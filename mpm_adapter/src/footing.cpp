@@ -1,0 +1,39 @@
+#include "acst_mpm/footing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace acst::mpm {
+
+double Footing::vx() const { return spec_.speed * std::sin(spec_.inclination); }
+double Footing::vy() const { return -spec_.speed * std::cos(spec_.inclination); }
+
+void Footing::constrain(const Grid& grid, NodeConstraints& c) const {
+  if (!active_) return;
+  const double h = grid.h, tol = 1e-9 * h;
+  const double vfx = vx(), vfy = vy();
+  const double centre = spec_.centre_x + motion_.dx, half = 0.5 * spec_.width;
+  const long long j_base = std::llround((base_y() - grid.y0) / h);
+  for (int j = static_cast<int>(std::max(0LL, j_base)); j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double x = grid.x0 + i * h;
+      if (std::fabs(x - centre) > half + tol) continue;
+      const std::size_t k = static_cast<std::size_t>(j) * grid.nx + i;
+      c.set_y[k] = reaction_footing;
+      c.vy[k] = vfy;
+      if (spec_.rough) {
+        c.set_x[k] = reaction_footing;
+        c.vx[k] = vfx;
+      }
+    }
+}
+
+void Footing::advance(const Reaction& on_soil, double dt) {
+  if (!active_) return;
+  const double vfx = vx(), vfy = vy();
+  motion_.work += (on_soil.fx * vfx + on_soil.fy * vfy) * dt;
+  motion_.dx += vfx * dt;
+  motion_.dy += vfy * dt;
+}
+
+}  // namespace acst::mpm

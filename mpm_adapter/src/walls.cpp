@@ -1,0 +1,46 @@
+#include "acst_mpm/walls.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace acst::mpm {
+
+namespace {
+
+int wall_node(double coordinate, double origin, double h) { return static_cast<int>(std::lround((coordinate - origin) / h)); }
+
+}  // namespace
+
+void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
+  const int nx = grid.nx, ny = grid.ny;
+  auto at = [&](int i, int j) -> double& { return q[static_cast<std::size_t>(j) * nx + i]; };
+  // node(k): the node k steps inward from the wall (k < 0: beyond it); `reach` exterior nodes.
+  auto fold_line = [](double s, int reach, auto&& node) {
+    for (int k = 1; k <= reach; ++k) node(k) += s * node(-k);
+    node(0) *= 1.0 + s;
+    for (int k = 1; k <= reach; ++k) node(-k) = s * node(k);
+  };
+  if (sides != SideWall::none) {
+    const double s = c == FieldKind::scalar ? 1.0 : (c == FieldKind::x || sides == SideWall::fixed ? -1.0 : 1.0);
+    const int il = wall_node(left, grid.x0, grid.h), ir = wall_node(right, grid.x0, grid.h);
+    for (int j = 0; j < ny; ++j) {
+      fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
+      fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
+    }
+  }
+  if (base_fixed) {
+    const double s = c == FieldKind::scalar ? 1.0 : -1.0;  // no slip: both components odd
+    const int jb = wall_node(base, grid.y0, grid.h);
+    for (int i = 0; i < nx; ++i) fold_line(s, std::min(jb, ny - 1 - jb), [&](int k) -> double& { return at(i, jb + k); });
+  }
+}
+
+int Walls::wall_of(int i, int j, const Grid& grid) const {
+  if (base_fixed && j <= wall_node(base, grid.y0, grid.h) + 2) return reaction_base;
+  if (sides != SideWall::none && i <= wall_node(left, grid.x0, grid.h) + 2) return reaction_left;
+  if (sides != SideWall::none && i >= wall_node(right, grid.x0, grid.h) - 2) return reaction_right;
+  return free_node;
+}
+
+}  // namespace acst::mpm
