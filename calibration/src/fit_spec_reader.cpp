@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
 
 #include "acst/json_input.hpp"
-#include "acst_common/files.hpp"
 #include "acst/parameters.hpp"
 #include "acst_calibration/fit_spec.hpp"
+#include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/material_object.hpp"

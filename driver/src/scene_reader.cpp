@@ -2,18 +2,16 @@
 // Steps are read in step_reader.cpp. Every error names the JSON path.
 #include <Eigen/SVD>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 
 #include "acst/fabric.hpp"
-#include "acst_common/files.hpp"
 #include "acst/json_input.hpp"
-#include "acst_driver/lab_data.hpp"
-#include "acst_driver/presets.hpp"
-#include "acst_driver/material_object.hpp"
-#include "acst_driver/scene.hpp"
+#include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_driver/lab_data.hpp"
+#include "acst_driver/material_object.hpp"
+#include "acst_driver/presets.hpp"
+#include "acst_driver/scene.hpp"
 #include "step_reader.hpp"
 
 namespace acst::driver {

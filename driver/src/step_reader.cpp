@@ -1,12 +1,10 @@
 #include "step_reader.hpp"
+
+#include "acst/scene_units.hpp"
 #include "acst_common/files.hpp"
-
-#include <filesystem>
-
+#include "acst_common/json_fields.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/presets.hpp"
-#include "acst_common/json_fields.hpp"
-#include "acst/scene_units.hpp"
 
 namespace acst::driver {
 

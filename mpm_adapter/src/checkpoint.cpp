@@ -1,8 +1,6 @@
 #include "acst_mpm/checkpoint.hpp"
 
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <type_traits>
 
 #include "acst_common/files.hpp"

@@ -1,7 +1,6 @@
 // Reads and validates an MPM scene; every error names the JSON path and the allowed values.
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
