@@ -23,7 +23,7 @@ double particle_steps_per_s(const Scene& scene, int threads, int steps) {
   const auto t0 = std::chrono::steady_clock::now();
   for (int k = 0; k < steps; ++k) sim.step();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return static_cast<double>(steps) * sim.particles.n / wall;
+  return static_cast<double>(steps) * sim.particles().n / wall;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
 #include "acst_calibration/report.hpp"
+#include "acst_common/interpolate.hpp"
 #include "acst_driver/record.hpp"
 #include "test_materials.hpp"
 
@@ -53,8 +54,8 @@ void write_synthetic(const fs::path& file, double sigma3, double e0, unsigned se
   f << "# kind: TC\n# sigma3_kPa: " << sigma3 << "\n# e0: " << e0 << "\n# bedding_angle_deg: 0\n# strain_range_pct: 0.25 8\n"
     << "eps_a_pct,stress_ratio,q_kPa,eps_v_pct\n0,1,0,0\n";
   for (int i = 1; i <= 32; ++i) {
-    const double x = 0.25 * i, s = interpolate(ea, sr, x) + 0.01 * noise(rng);
-    f << x << ',' << s << ',' << (s - 1.0) * sigma3 << ',' << interpolate(ea, ev, x) + 0.02 * noise(rng) << '\n';
+    const double x = 0.25 * i, s = acst::common::interpolate(ea, sr, x) + 0.01 * noise(rng);
+    f << x << ',' << s << ',' << (s - 1.0) * sigma3 << ',' << acst::common::interpolate(ea, ev, x) + 0.02 * noise(rng) << '\n';
   }
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 
 #include "acst_common/duration.hpp"
 #include "acst_common/files.hpp"
+#include "acst_common/interpolate.hpp"
 #include "acst_common/json_fields.hpp"
 #include "acst_common/parallel_for.hpp"
 #include "acst_common/plain_stem.hpp"
@@ -108,4 +110,17 @@ TEST(CommonPlainStem, OnlyNamesThatStayInTheirFolder) {
     EXPECT_FALSE(acst::common::is_plain_stem(bad)) << bad;
   EXPECT_FALSE(acst::common::is_plain_stem(std::string(101, 'a')));
   EXPECT_EQ(message_of([] { acst::common::require_plain_stem("..", "/name"); }).rfind("/name: '..' is not a plain file stem", 0), 0u);
+}
+
+TEST(CommonInterpolate, LinearInsideNaNOutsideFirstOfRepeats) {
+  const std::vector<double> x{0.0, 1.0, 1.0, 3.0}, y{0.0, 2.0, 5.0, 9.0};
+  EXPECT_DOUBLE_EQ(acst::common::interpolate(x, y, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(acst::common::interpolate(x, y, 1.0), 2.0);  // the first of the repeated x
+  EXPECT_DOUBLE_EQ(acst::common::interpolate(x, y, 2.0), 7.0);  // between the last repeat and 3
+  EXPECT_TRUE(std::isnan(acst::common::interpolate(x, y, -0.1)));
+  EXPECT_TRUE(std::isnan(acst::common::interpolate(x, y, 3.1)));
+  EXPECT_TRUE(std::isnan(acst::common::interpolate({}, {}, 0.0)));
+  const auto [fx, fy] = acst::common::finite_samples({0.0, 1.0, NAN, 3.0}, {1.0, NAN, 4.0, 7.0});
+  EXPECT_EQ(fx, (std::vector<double>{0.0, 3.0}));
+  EXPECT_EQ(fy, (std::vector<double>{1.0, 7.0}));
 }

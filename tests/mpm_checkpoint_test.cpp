@@ -23,13 +23,13 @@ Scene small_footing(int threads) {
 }
 
 void expect_identical(const Simulation& a, const Simulation& b) {
-  ASSERT_EQ(a.step_count, b.step_count);
-  EXPECT_EQ(a.time, b.time);
-  EXPECT_EQ(a.particles.x, b.particles.x);
-  EXPECT_EQ(a.particles.vy, b.particles.vy);
-  EXPECT_EQ(a.particles.stress, b.particles.stress);
-  EXPECT_EQ(a.particles.statev, b.particles.statev);
-  EXPECT_EQ(a.reaction[reaction_footing].fy, b.reaction[reaction_footing].fy);
+  ASSERT_EQ(a.step_count(), b.step_count());
+  EXPECT_EQ(a.time(), b.time());
+  EXPECT_EQ(a.particles().x, b.particles().x);
+  EXPECT_EQ(a.particles().vy, b.particles().vy);
+  EXPECT_EQ(a.particles().stress, b.particles().stress);
+  EXPECT_EQ(a.particles().statev, b.particles().statev);
+  EXPECT_EQ(a.reaction(reaction_footing).fy, b.reaction(reaction_footing).fy);
 }
 
 }  // namespace
@@ -43,14 +43,13 @@ TEST(MpmCheckpoint, ResumedRunContinuesBitForBit) {
   for (int k = 0; k < 45; ++k) first.step();
   RunState state;
   state.vtk_frames = 3;
-  state.history.push_back(LoadRecord{45, first.time, 0.01, 0.02, 3.0, 0.5, 10.0, 1.0, 2.0});
+  state.history.push_back(LoadRecord{45, first.time(), 0.01, 0.02, 3.0, 0.5, 10.0, 1.0, 2.0});
   const std::string file = (std::filesystem::temp_directory_path() / "acst_mpm_checkpoint_test.bin").string();
   write_checkpoint(file, scene, first, state);
 
   Simulation resumed = build_simulation(scene);
   RunState loaded;
   read_checkpoint(file, scene, resumed, loaded);
-  resumed.prepare();
   for (int k = 0; k < 35; ++k) resumed.step();
   expect_identical(straight, resumed);
   EXPECT_EQ(loaded.vtk_frames, 3);
@@ -78,7 +77,7 @@ TEST(MpmCheckpoint, RejectsAnotherSceneAndTruncatedFiles) {
   } catch (const SimulationError& e) {
     EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(again.step_count, 0) << "a failed read leaves the simulation untouched";
+  EXPECT_EQ(again.step_count(), 0) << "a failed read leaves the simulation untouched";
   std::remove(file.c_str());
 }
 
@@ -87,5 +86,5 @@ TEST(MpmDeterminism, SameThreadCountSameResult) {
   Simulation a = build_simulation(scene), b = build_simulation(scene);
   for (int k = 0; k < 60; ++k) a.step(), b.step();
   expect_identical(a, b);
-  EXPECT_GT(-a.reaction[reaction_footing].fy, 0.0) << "the footing pushes on the sand";
+  EXPECT_GT(-a.reaction(reaction_footing).fy, 0.0) << "the footing pushes on the sand";
 }

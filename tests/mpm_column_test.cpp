@@ -18,35 +18,35 @@ TEST(MpmColumn, ElasticK0ColumnStaysAtRestAndTheBaseCarriesItsWeight) {
       width, depth, 0.25, 2e4, 2.0 / 7.0, rho,
       R"("gravity": 9.8, "initial_stress": {"type": "geostatic", "K0": 0.4}, "stop": {"steps": 1})",
       R"({"grid_damping": 0})"));
-  const std::vector<double> s0 = sim.particles.stress;
+  const std::vector<double> s0 = sim.particles().stress;
   const double c = std::sqrt(2e7 * (1 - 2.0 / 7) / ((1 + 2.0 / 7) * (1 - 4.0 / 7)) / rho);
-  while (sim.time < 4.0 * depth / c * 2) sim.step();  // two periods of the column's first mode
+  while (sim.time() < 4.0 * depth / c * 2) sim.step();  // two periods of the column's first mode
   double vmax = 0.0, sdev = 0.0;
-  for (std::size_t p = 0; p < sim.particles.n; ++p) {
-    vmax = std::max(vmax, std::hypot(sim.particles.vx[p], sim.particles.vy[p]));
-    for (int k : {0, 1, 2}) sdev = std::max(sdev, std::fabs(sim.particles.stress[6 * p + k] - s0[6 * p + k]));
+  for (std::size_t p = 0; p < sim.particles().n; ++p) {
+    vmax = std::max(vmax, std::hypot(sim.particles().vx[p], sim.particles().vy[p]));
+    for (int k : {0, 1, 2}) sdev = std::max(sdev, std::fabs(sim.particles().stress[6 * p + k] - s0[6 * p + k]));
   }
   // Scale: a column released from zero stress would swing at g * depth / c; at rest is far below.
   EXPECT_LT(vmax, 0.01 * g * depth / c) << "max particle speed " << vmax << " m/s";
   EXPECT_LT(sdev, 0.01 * rho * g * depth / 1000.0) << "max stress change " << sdev << " kPa";
   const double weight = rho * g * depth * width;  // N/m
-  EXPECT_NEAR(sim.reaction[reaction_base].fy, weight, 0.005 * weight);
-  EXPECT_NEAR(sim.reaction[reaction_base].fx, 0.0, 1e-6 * weight);
+  EXPECT_NEAR(sim.reaction(reaction_base).fy, weight, 0.005 * weight);
+  EXPECT_NEAR(sim.reaction(reaction_base).fx, 0.0, 1e-6 * weight);
 }
 
 TEST(MpmColumn, SelfWeightFromZeroStressSettlesToRhoGDepth) {
   Simulation sim = mpm_test::build(mpm_test::elastic_block(
       width, depth, 0.25, 2e4, 0.3, rho, R"("gravity": 9.8, "stop": {"steps": 1})",
       R"({"grid_damping": 20, "particle_update": "FLIP"})"));
-  while (sim.time < 3.0) sim.step();
+  while (sim.time() < 3.0) sim.step();
   double worst = 0.0;
-  for (std::size_t p = 0; p < sim.particles.n; ++p) {
-    const double d = depth - sim.particles.y[p];
+  for (std::size_t p = 0; p < sim.particles().n; ++p) {
+    const double d = depth - sim.particles().y[p];
     const double expected = -rho * g * d / 1000.0;  // kPa
-    worst = std::max(worst, std::fabs(sim.particles.stress[6 * p + 1] - expected));
+    worst = std::max(worst, std::fabs(sim.particles().stress[6 * p + 1] - expected));
   }
   EXPECT_LT(worst, 0.02 * rho * g * depth / 1000.0) << "largest error in sigma_yy, kPa";
-  EXPECT_NEAR(sim.reaction[reaction_base].fy, rho * g * depth * width, 0.01 * rho * g * depth * width);
+  EXPECT_NEAR(sim.reaction(reaction_base).fy, rho * g * depth * width, 0.01 * rho * g * depth * width);
 }
 
 TEST(MpmColumn, SurchargeReadoutEqualsTheAppliedLoad) {
@@ -54,6 +54,6 @@ TEST(MpmColumn, SurchargeReadoutEqualsTheAppliedLoad) {
   Simulation sim = mpm_test::build(mpm_test::elastic_block(
       width, depth, 0.25, 2e4, 0.3, rho, R"("surcharge_kPa": 10, "stop": {"steps": 1})",
       R"({"grid_damping": 20, "particle_update": "FLIP"})"));
-  while (sim.time < 3.0) sim.step();
-  EXPECT_NEAR(sim.reaction[reaction_base].fy, 10e3 * width, 0.005 * 10e3 * width);
+  while (sim.time() < 3.0) sim.step();
+  EXPECT_NEAR(sim.reaction(reaction_base).fy, 10e3 * width, 0.005 * 10e3 * width);
 }

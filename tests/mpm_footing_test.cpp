@@ -16,9 +16,9 @@ constexpr double pi = 3.14159265358979323846;
 double mean_V(Simulation& s, double until_time) {  // kN/m, mean over the steps until `until_time`
   double sum = 0;
   int n = 0;
-  while (s.time < until_time) {
+  while (s.time() < until_time) {
     s.step();
-    sum += -s.reaction[reaction_footing].fy / 1000.0;
+    sum += -s.reaction(reaction_footing).fy / 1000.0;
     ++n;
   }
   return sum / n;
@@ -35,8 +35,8 @@ TEST(FootingReaction, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffness)
       R"({"grid_damping": 10, "particle_update": "FLIP"})"));
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));  // kPa
   mean_V(s, 2.0);
-  const double t0 = s.time;
-  const double V = mean_V(s, 2.5), S = v * 0.5 * (t0 + s.time);
+  const double t0 = s.time();
+  const double V = mean_V(s, 2.5), S = v * 0.5 * (t0 + s.time());
   const double expected = W * M * S / H;  // kN/m
   EXPECT_NEAR(V, expected, 0.02 * expected) << "V " << V << " kN/m at S " << S << " m";
 }

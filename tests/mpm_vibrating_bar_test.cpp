@@ -20,33 +20,33 @@ struct BarRun {
 
 double strain_energy(const Simulation& s) {  // J/m: sum V/2 sigma : eps, kPa -> Pa
   double u = 0;
-  for (std::size_t p = 0; p < s.particles.n; ++p) {
-    const double* sg = &s.particles.stress[6 * p];
-    const double* e = &s.particles.strain[3 * p];
-    u += 0.5 * s.particles.volume(p) * 1000.0 * (sg[0] * e[0] + sg[1] * e[1] + 2 * sg[3] * e[2]);
+  for (std::size_t p = 0; p < s.particles().n; ++p) {
+    const double* sg = &s.particles().stress[6 * p];
+    const double* e = &s.particles().strain[3 * p];
+    u += 0.5 * s.particles().volume(p) * 1000.0 * (sg[0] * e[0] + sg[1] * e[1] + 2 * sg[3] * e[2]);
   }
   return u;
 }
 
 BarRun vibrate(const std::string& solver, double periods) {
   Simulation s = mpm_test::build(mpm_test::elastic_block(0.4, L, 0.1, E, nu, rho, R"("stop": {"steps": 1})", solver));
-  for (std::size_t p = 0; p < s.particles.n; ++p) s.particles.vy[p] = 0.01 * std::sin(pi * s.particles.y[p] / (2 * L));
+  for (std::size_t p = 0; p < s.particles().n; ++p) s.particles().vy[p] = 0.01 * std::sin(pi * s.particles().y[p] / (2 * L));
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) * 1000.0;
   const double T = 4 * L / std::sqrt(M / rho);
   const double e0 = s.kinetic_energy();
   auto momentum = [&] {
     double m = 0;
-    for (std::size_t p = 0; p < s.particles.n; ++p) m += s.particles.mass[p] * s.particles.vy[p];
+    for (std::size_t p = 0; p < s.particles().n; ++p) m += s.particles().mass[p] * s.particles().vy[p];
     return m;
   };
   // Zero crossings of the vertical momentum (~ cos(2 pi t / T)) are half a period apart.
   std::vector<double> crossings;
   double last = momentum(), last_t = 0.0;
-  while (s.time < periods * T) {
+  while (s.time() < periods * T) {
     s.step();
     const double m = momentum();
-    if ((m > 0) != (last > 0)) crossings.push_back(last_t + (s.time - last_t) * last / (last - m));
-    last = m, last_t = s.time;
+    if ((m > 0) != (last > 0)) crossings.push_back(last_t + (s.time() - last_t) * last / (last - m));
+    last = m, last_t = s.time();
   }
   BarRun r;
   if (crossings.size() >= 3) r.period = crossings[2] - crossings[0];

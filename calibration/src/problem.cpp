@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "acst/material.hpp"
+#include "acst_common/interpolate.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/record.hpp"
 #include "acst_common/parallel_for.hpp"
@@ -15,14 +16,6 @@
 namespace acst::calibration {
 
 using nlohmann::json;
-
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
-  if (x.empty() || !(at >= x.front() && at <= x.back())) return NAN;
-  const auto it = std::lower_bound(x.begin(), x.end(), at);
-  const std::size_t i = static_cast<std::size_t>(it - x.begin());
-  if (x[i] == at || i == 0) return y[i];
-  return y[i - 1] + (y[i] - y[i - 1]) * (at - x[i - 1]) / (x[i] - x[i - 1]);
-}
 
 double series_scale(const std::vector<double>& measured, const std::string& axis) {
   double lo = INFINITY, hi = -INFINITY, big = 0.0;
@@ -246,7 +239,7 @@ double Problem::simulated(std::size_t k, const Series& s, std::size_t i,
     return o.ok ? o.peak_phi_deg : NAN;
   }
   const SimulationOutcome& o = *outcomes[sims_of_[k].front()];
-  return o.ok ? interpolate(o.eps_a_pct, s.axis == "stress" ? o.stress : o.eps_v_pct, s.x[i]) : NAN;
+  return o.ok ? common::interpolate(o.eps_a_pct, s.axis == "stress" ? o.stress : o.eps_v_pct, s.x[i]) : NAN;
 }
 
 void Problem::assemble(const std::vector<const SimulationOutcome*>& outcomes, Eigen::VectorXd& r) const {

@@ -7,27 +7,13 @@
 #include <filesystem>
 #include <sstream>
 
+#include "acst_common/interpolate.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/output.hpp"
 
 namespace acst::driver {
 
 namespace {
-
-
-// Linear interpolation of (x, y) samples (NaN entries skipped) at x; NaN outside their range.
-double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
-  double x0 = NAN, y0 = NAN;
-  for (std::size_t i = 0; i < xs.size() && i < ys.size(); ++i) {
-    if (std::isnan(xs[i]) || std::isnan(ys[i])) continue;
-    if (xs[i] == x) return ys[i];
-    if (!std::isnan(x0) && ((x0 <= x && x <= xs[i]) || (xs[i] <= x && x <= x0)))
-      return y0 + (ys[i] - y0) * (x - x0) / (xs[i] - x0);
-    x0 = xs[i];
-    y0 = ys[i];
-  }
-  return NAN;
-}
 
 struct LabBlocks {
   std::string title;
@@ -46,6 +32,7 @@ LabBlocks lab_blocks(const LabCurve& c) {
   const std::string kind = c.text("kind");
   // p = sigma3 + q/3 only where sigma_2 = sigma_3 (triaxial compression); not in plane strain.
   const bool triaxial = !std::isnan(s3) && (kind.empty() || kind.rfind("TC", 0) == 0);
+  const auto [ea_q, q_finite] = common::finite_samples(ea, q);  // lab strain increases along a curve
   char line[96];
   for (std::size_t i = 0; i < ea.size(); ++i) {
     if (!q.empty() && !std::isnan(q[i])) {
@@ -63,7 +50,7 @@ LabBlocks lab_blocks(const LabCurve& c) {
     if (!ev.empty() && !std::isnan(ev[i])) {
       std::snprintf(line, sizeof line, "%.6g,%.6g\n", ea[i], ev[i]);
       b.ev += line;
-      const double qi = q.empty() ? NAN : interpolate(ea, q, ea[i]);
+      const double qi = common::interpolate(ea_q, q_finite, ea[i]);
       if (triaxial && !std::isnan(e0) && !std::isnan(qi)) {
         const double e = e0 - (1.0 + e0) * ev[i] / 100.0;
         std::snprintf(line, sizeof line, "%.6g,%.6g\n", s3 + qi / 3.0, e);

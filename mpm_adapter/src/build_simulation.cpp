@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "acst_mpm/scene.hpp"
 
@@ -45,10 +46,12 @@ Simulation build_simulation(const Scene& s) {
   grid.nx = static_cast<int>(std::lround((x_max - x_min) / h)) + 2 * margin + 1;
   grid.ny = static_cast<int>(std::lround((y_max - y_min) / h)) + margin + s.cells_above + 1;
 
-  Walls walls;
+  Boundaries boundaries;
+  Walls& walls = boundaries.walls;
   walls.left = x_min, walls.right = x_max, walls.base = y_min;
   walls.base_fixed = s.base_fixed;
   walls.sides = s.sides;
+  boundaries.surcharge = s.surcharge;
 
   std::vector<std::shared_ptr<const Material>> materials;
   std::map<std::string, int> index;
@@ -56,8 +59,6 @@ Simulation build_simulation(const Scene& s) {
     materials.push_back(std::make_shared<const Material>(s.materials[i].name, s.materials[i].json_text));
     index[s.materials[i].name] = static_cast<int>(i);
   }
-  Simulation sim(grid, walls, s.solver, materials);
-  sim.surcharge = s.surcharge;
   int ppc = s.bodies.front().particles_per_cell;
   std::size_t count = 0, state_size = 0;
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
@@ -68,7 +69,6 @@ Simulation build_simulation(const Scene& s) {
     count += static_cast<std::size_t>(cells) * ppc * ppc;
     state_size = std::max<std::size_t>(state_size, materials[index[b.material]]->state_size());
   }
-  sim.particle_half_width = 0.5 / ppc;
   if (s.footing) {
     Footing::Spec f;
     f.centre_x = s.footing->centre_x;
@@ -78,10 +78,10 @@ Simulation build_simulation(const Scene& s) {
     f.inclination = s.footing->inclination_deg * pi / 180.0;
     f.rough = s.footing->rough;
     if (!std::isfinite(f.base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
-    sim.footing = Footing(f);
+    boundaries.footing = Footing(f);
   }
 
-  Particles& P = sim.particles;
+  Particles P;
   P.resize(count, static_cast<int>(state_size));
   const double d = h / ppc;
   std::size_t p = 0;
@@ -125,8 +125,7 @@ Simulation build_simulation(const Scene& s) {
         if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = d;
       }
   }
-  sim.prepare();
-  return sim;
+  return Simulation(grid, boundaries, s.solver, std::move(materials), std::move(P), 0.5 / ppc);
 }
 
 }  // namespace acst::mpm

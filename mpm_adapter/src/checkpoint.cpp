@@ -71,14 +71,14 @@ void particle_arrays(P& particles, F&& f) {
   f(p.material);
 }
 
-template <class IO, class Sim, class State>
-void run_fields(IO& io, Sim& sim, State& st) {
-  io.pod(sim.step_count);
-  io.pod(sim.time);
-  io.pod(sim.dt);
-  io.pod(sim.footing.motion().dx);
-  io.pod(sim.footing.motion().dy);
-  io.pod(sim.footing.motion().work);
+template <class IO, class C, class M, class State>
+void run_fields(IO& io, C& clock, M& motion, State& st) {
+  io.pod(clock.step);
+  io.pod(clock.time);
+  io.pod(clock.dt);
+  io.pod(motion.dx);
+  io.pod(motion.dy);
+  io.pod(motion.work);
   io.vec(st.history);
   io.vec(st.every_step);
   io.pod(st.sum_V);
@@ -98,9 +98,9 @@ void write_checkpoint(const std::string& path, const Scene& scene, const Simulat
   Writer w;
   w.out.append(magic, sizeof magic);
   w.str(scene.text);
-  w.pod<std::uint64_t>(sim.particles.n);
-  particle_arrays(sim.particles, [&](const auto& v) { w.vec(v); });
-  run_fields(w, sim, state);
+  w.pod<std::uint64_t>(sim.particles().n);
+  particle_arrays(sim.particles(), [&](const auto& v) { w.vec(v); });
+  run_fields(w, sim.clock(), sim.footing().motion(), state);
   acst::common::write_file_atomically(path, w.out);
 }
 
@@ -115,19 +115,19 @@ void read_checkpoint(const std::string& path, const Scene& scene, Simulation& si
   if (r.str() != scene.text) throw SimulationError("checkpoint '" + path + "' was written for a different scene");
   std::uint64_t n = 0;
   r.pod(n);
-  if (n != sim.particles.n) throw SimulationError("checkpoint '" + path + "' holds a different number of particles");
-  Particles P = sim.particles;
+  if (n != sim.particles().n) throw SimulationError("checkpoint '" + path + "' holds a different number of particles");
+  Particles P = sim.particles();
   particle_arrays(P, [&](auto& v) {
     const std::size_t expected = v.size();
     r.vec(v);
     if (v.size() != expected) throw SimulationError("checkpoint '" + path + "' has an array of the wrong size");
   });
   RunState st;
-  Simulation copy = sim;
-  run_fields(r, copy, st);
+  Clock clock;
+  Footing::Motion motion;
+  run_fields(r, clock, motion, st);
   if (r.at != data.size()) throw SimulationError("checkpoint '" + path + "' has trailing data");
-  copy.particles = std::move(P);
-  sim = std::move(copy);
+  sim.restore(std::move(P), clock, motion);
   state = std::move(st);
 }
 

@@ -9,17 +9,17 @@ namespace acst::mpm {
 double max_shear_strain(const double* e) { return std::hypot(e[0] - e[1], 2.0 * e[2]); }
 
 ParticleFields particle_fields(const Simulation& sim) {
-  const Particles& P = sim.particles;
+  const Particles& P = sim.particles();
   ParticleFields f;
   for (auto* v : {&f.p, &f.q, &f.shear_strain, &f.displacement, &f.void_ratio, &f.fabric_norm, &f.A, &f.N})
     v->assign(P.n, 0.0);
   std::vector<int> e_index;
-  for (const auto& m : sim.materials) {
+  for (const auto& m : sim.materials()) {
     e_index.push_back(m->state_index("void_ratio"));
     f.sand = f.sand || m->is_sand();
   }
   for (std::size_t i = 0; i < P.n; ++i) {
-    const Material& m = *sim.materials[P.material[i]];
+    const Material& m = *sim.materials()[P.material[i]];
     const double* s = &P.stress[6 * i];
     const double* q = P.statev.data() + P.state_size * i;
     double d[ACST_NDIAGNOSTICS];

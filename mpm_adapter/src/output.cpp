@@ -48,7 +48,7 @@ std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& his
 }
 
 std::string vtp_text(const Simulation& sim) {
-  const Particles& P = sim.particles;
+  const Particles& P = sim.particles();
   const ParticleFields f = particle_fields(sim);
   std::string out;
   out.reserve(P.n * 400);

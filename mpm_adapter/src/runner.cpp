@@ -29,7 +29,6 @@ class Run {
     st_.contours_done.assign(scene.output.contours_at_S_over_B.size(), 0);
     if (!opt.resume_from.empty()) {
       read_checkpoint(opt.resume_from, scene, sim_, st_);
-      sim_.prepare();
     }
   }
 
@@ -37,7 +36,7 @@ class Run {
     fs::create_directories(opt_.output_dir);
     const auto start = Clock::now();
     auto last_checkpoint = start;
-    const long long first_step = sim_.step_count;
+    const long long first_step = sim_.step_count();
     if (st_.vtk_frames == 0) write_frame();
     try {
       while (!finished()) {
@@ -46,7 +45,7 @@ class Run {
         if (due_frame()) write_frame();
         contours_at_requested();
         const auto now = Clock::now();
-        if (progress_.due()) show_progress(sim_.step_count - first_step);
+        if (progress_.due()) show_progress(sim_.step_count() - first_step);
         if (scene_.output.checkpoint_every_s > 0 &&
             std::chrono::duration<double>(now - last_checkpoint).count() > scene_.output.checkpoint_every_s) {
           checkpoint();
@@ -66,9 +65,9 @@ class Run {
     if (st_.period_steps > 0) close_period();
     progress_.close();
     RunSummary sum;
-    sum.steps = sim_.step_count - first_step;
+    sum.steps = sim_.step_count() - first_step;
     sum.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
-    sum.particle_steps_per_s = sum.wall_s > 0 ? static_cast<double>(sum.steps) * sim_.particles.n / sum.wall_s : 0.0;
+    sum.particle_steps_per_s = sum.wall_s > 0 ? static_cast<double>(sum.steps) * sim_.particles().n / sum.wall_s : 0.0;
     write_results(sum);
     return sum;
   }
@@ -82,38 +81,38 @@ class Run {
   common::ProgressLine progress_{std::cerr, !opt_.quiet, 0.2, 1.0};
 
   std::string path(const std::string& name) const { return (fs::path(opt_.output_dir) / name).string(); }
-  double settlement() const { return sim_.footing.settlement(); }
+  double settlement() const { return sim_.footing().settlement(); }
   double S_over_B() const { return settlement() / B_; }
   const std::vector<LoadRecord>& rows() const { return scene_.output.every_step_csv ? st_.every_step : st_.history; }
 
   bool finished() const {
     if (scene_.stop.S_over_B) return S_over_B() >= *scene_.stop.S_over_B;
-    if (scene_.stop.time) return sim_.time >= *scene_.stop.time;
-    return sim_.step_count >= *scene_.stop.steps;
+    if (scene_.stop.time) return sim_.time() >= *scene_.stop.time;
+    return sim_.step_count() >= *scene_.stop.steps;
   }
 
   double progress_fraction() const {
     if (scene_.stop.S_over_B) return S_over_B() / *scene_.stop.S_over_B;
-    if (scene_.stop.time) return sim_.time / *scene_.stop.time;
-    return static_cast<double>(sim_.step_count) / static_cast<double>(*scene_.stop.steps);
+    if (scene_.stop.time) return sim_.time() / *scene_.stop.time;
+    return static_cast<double>(sim_.step_count()) / static_cast<double>(*scene_.stop.steps);
   }
 
   LoadRecord current(double V, double H) const {
     LoadRecord r;
-    r.step = sim_.step_count;
-    r.time = sim_.time;
+    r.step = sim_.step_count();
+    r.time = sim_.time();
     r.settlement = settlement();
     r.S_over_B = S_over_B();
     r.V_kN_per_m = V;
     r.H_kN_per_m = H;
     r.q_kPa = V / B_;
     r.kinetic_J_per_m = sim_.kinetic_energy();
-    r.footing_work_J_per_m = sim_.footing.motion().work;
+    r.footing_work_J_per_m = sim_.footing().motion().work;
     return r;
   }
 
   void record() {
-    const Reaction& f = sim_.reaction[reaction_footing];
+    const Reaction& f = sim_.reaction(reaction_footing);
     const double V = -f.fy / 1000.0, H = f.fx / 1000.0;  // N/m -> kN/m
     st_.sum_V += V;
     st_.sum_H += H;
@@ -131,7 +130,7 @@ class Run {
       Snapshot& s = st_.peak;
       s.S_over_B = r.S_over_B;
       s.V_kN_per_m = r.V_kN_per_m;
-      const Particles& P = sim_.particles;
+      const Particles& P = sim_.particles();
       s.x = P.x;
       s.y = P.y;
       s.shear_strain.resize(P.n);
@@ -145,7 +144,7 @@ class Run {
 
   bool due_frame() const {
     const int k = st_.vtk_frames;
-    if (scene_.output.vtk_every_time) return sim_.time >= k * *scene_.output.vtk_every_time;
+    if (scene_.output.vtk_every_time) return sim_.time() >= k * *scene_.output.vtk_every_time;
     if (scene_.footing && scene_.output.vtk_every_S_over_B > 0) return S_over_B() >= k * scene_.output.vtk_every_S_over_B;
     return false;
   }
@@ -154,7 +153,7 @@ class Run {
     char name[64];
     std::snprintf(name, sizeof name, "particles_%04d.vtp", st_.vtk_frames);
     common::write_file_atomically(path(name), vtp_text(sim_));
-    st_.vtk_times.push_back(sim_.time);
+    st_.vtk_times.push_back(sim_.time());
     ++st_.vtk_frames;
     common::write_file_atomically(path("particles.pvd"), pvd_text("particles", st_.vtk_times));
   }
@@ -168,7 +167,7 @@ class Run {
       const ParticleFields f = particle_fields(sim_);
       char tag[48];
       std::snprintf(tag, sizeof tag, "SB%.3f", targets[k]);
-      contour_pair(tag, "S/B = " + std::to_string(S_over_B()).substr(0, 5), sim_.particles.x, sim_.particles.y,
+      contour_pair(tag, "S/B = " + std::to_string(S_over_B()).substr(0, 5), sim_.particles().x, sim_.particles().y,
                    f.shear_strain, f.displacement);
     }
   }
@@ -188,7 +187,7 @@ class Run {
     const double q = st_.history.empty() ? 0.0 : st_.history.back().q_kPa;
     char text[256];
     std::snprintf(text, sizeof text, "%s: step %lld  t %.3f s  S/B %.4f  q %.1f kPa  %.0f steps/s  ", scene_.name.c_str(),
-                  sim_.step_count, sim_.time, S_over_B(), q, rate);
+                  sim_.step_count(), sim_.time(), S_over_B(), q, rate);
     progress_.show(text + common::ProgressLine::time_left(wall, progress_fraction()));
   }
 
@@ -213,9 +212,9 @@ class Run {
                      st_.peak.y, st_.peak.shear_strain, st_.peak.displacement);
     }
     const nlohmann::ordered_json summary = {{"scene", scene_.name},
-                                            {"particles", sim_.particles.n},
-                                            {"steps", sim_.step_count},
-                                            {"time_s", sim_.time},
+                                            {"particles", sim_.particles().n},
+                                            {"steps", sim_.step_count()},
+                                            {"time_s", sim_.time()},
                                             {"wall_s", sum.wall_s},
                                             {"threads", thread_count_used()},
                                             {"particle_steps_per_s", sum.particle_steps_per_s},

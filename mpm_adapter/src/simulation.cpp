@@ -33,18 +33,34 @@ double Particles::volume(std::size_t p) const {
   return volume_initial[p] * (f[0] * f[3] - f[1] * f[2]);
 }
 
-Simulation::Simulation(Grid g, Walls w, Settings s, std::vector<std::shared_ptr<const Material>> mats)
-    : grid(g), walls(w), settings(s), materials(std::move(mats)) {}
+Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
+                       std::vector<std::shared_ptr<const Material>> materials, Particles particles,
+                       double particle_half_width)
+    : grid_(grid),
+      boundaries_(boundaries),
+      settings_(settings),
+      materials_(std::move(materials)),
+      particles_(std::move(particles)),
+      particle_half_width_(particle_half_width) {
+  prepare();
+}
+
+void Simulation::restore(Particles particles, const Clock& clock, const Footing::Motion& motion) {
+  particles_ = std::move(particles);
+  clock_ = clock;
+  boundaries_.footing.motion() = motion;
+  prepare();
+}
 
 bool Simulation::is_xpic_step(long long step) const {
-  if (settings.update == ParticleUpdate::PIC) return true;
-  if (settings.update == ParticleUpdate::FLIP) return false;
-  return (step + 1) % settings.xpic_every == 0;
+  if (settings_.update == ParticleUpdate::PIC) return true;
+  if (settings_.update == ParticleUpdate::FLIP) return false;
+  return (step + 1) % settings_.xpic_every == 0;
 }
 
 void Simulation::prepare() {
   StepScratch& w = work_;
-  const std::size_t N = grid.nodes(), n = particles.n;
+  const std::size_t N = grid_.nodes(), n = particles_.n;
   for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
   w.constraints.resize(N);
   w.first_i.assign(n, 0);
@@ -52,64 +68,64 @@ void Simulation::prepare() {
   for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
   w.pvx.assign(n, 0.0);
   w.pvy.assign(n, 0.0);
-  w.nx = grid.nx;
-  w.scatter.configure(settings.threads, N);
-  if (step_count == 0 || particles.wave_speed.empty() ||
-      std::all_of(particles.wave_speed.begin(), particles.wave_speed.end(), [](double c) { return c == 0.0; }))
+  w.nx = grid_.nx;
+  w.scatter.configure(settings_.threads, N);
+  if (clock_.step == 0 || particles_.wave_speed.empty() ||
+      std::all_of(particles_.wave_speed.begin(), particles_.wave_speed.end(), [](double c) { return c == 0.0; }))
     refresh_wave_speeds();
 }
 
 void Simulation::refresh_wave_speeds() {
-  Particles& P = particles;
+  Particles& P = particles_;
   const std::size_t n = P.n;
   std::vector<std::string> errors(work_.scatter.threads());
   parallel_for(work_.scatter.threads(), n, [&](int t, std::size_t p) {
     try {
       const double J = P.volume(p) / P.volume_initial[p];
-      P.wave_speed[p] = materials[P.material[p]]->wave_speed(&P.stress[6 * p],
+      P.wave_speed[p] = materials_[P.material[p]]->wave_speed(&P.stress[6 * p],
                                                              P.statev.data() + P.state_size * p, P.density[p] / J);
     } catch (const std::exception& e) {
       if (errors[t].empty()) errors[t] = "particle " + std::to_string(p) + ": " + e.what();
     }
   });
   for (const auto& e : errors)
-    if (!e.empty()) throw SimulationError("step " + std::to_string(step_count) + ", " + e);
+    if (!e.empty()) throw SimulationError("step " + std::to_string(clock_.step) + ", " + e);
 }
 
 double Simulation::stable_time_step() const {
-  const Particles& P = particles;
-  const double scale = 1.0 / std::sqrt(settings.mass_scaling);
+  const Particles& P = particles_;
+  const double scale = 1.0 / std::sqrt(settings_.mass_scaling);
   double fastest = 0.0;
   for (std::size_t p = 0; p < P.n; ++p)
     fastest = std::max(fastest, P.wave_speed[p] * scale + std::hypot(P.vx[p], P.vy[p]));
   if (!(fastest > 0.0) || !std::isfinite(fastest))
-    throw SimulationError("step " + std::to_string(step_count) + ": no finite wave speed for the time step");
-  return settings.cfl * grid.h / fastest;
+    throw SimulationError("step " + std::to_string(clock_.step) + ": no finite wave speed for the time step");
+  return settings_.cfl * grid_.h / fastest;
 }
 
 double Simulation::kinetic_energy() const {
   double k = 0.0;
-  for (std::size_t p = 0; p < particles.n; ++p)
-    k += 0.5 * particles.mass[p] * (particles.vx[p] * particles.vx[p] + particles.vy[p] * particles.vy[p]);
+  for (std::size_t p = 0; p < particles_.n; ++p)
+    k += 0.5 * particles_.mass[p] * (particles_.vx[p] * particles_.vx[p] + particles_.vy[p] * particles_.vy[p]);
   return k;
 }
 
 void Simulation::fail(std::size_t p, const std::string& what, const std::string& reproducer) const {
   char where[96];
-  std::snprintf(where, sizeof where, "step %lld, particle %zu at (%.4g, %.4g) m: ", step_count, p, particles.x[p],
-                particles.y[p]);
+  std::snprintf(where, sizeof where, "step %lld, particle %zu at (%.4g, %.4g) m: ", clock_.step, p, particles_.x[p],
+                particles_.y[p]);
   throw SimulationError(where + what, reproducer);
 }
 
 void Simulation::compute_shape_functions() {
   StepScratch& w = work_;
-  Particles& P = particles;
-  const double h = grid.h, l = particle_half_width;
+  Particles& P = particles_;
+  const double h = grid_.h, l = particle_half_width_;
   std::vector<long long> off_grid(w.scatter.threads(), -1);
   parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    const AxisWeights ax = axis_weights((P.x[p] - grid.x0) / h, l), ay = axis_weights((P.y[p] - grid.y0) / h, l);
-    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid.nx ||
-        ay.first + 3 >= grid.ny) {
+    const AxisWeights ax = axis_weights((P.x[p] - grid_.x0) / h, l), ay = axis_weights((P.y[p] - grid_.y0) / h, l);
+    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid_.nx ||
+        ay.first + 3 >= grid_.ny) {
       if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
       return;
     }
@@ -128,13 +144,13 @@ void Simulation::compute_shape_functions() {
 
 void Simulation::apply_constraints() {
   work_.constraints.clear();
-  footing.constrain(grid, work_.constraints);
+  boundaries_.footing.constrain(grid_, work_.constraints);
   nodal_velocity(work_.ax.data(), work_.ay.data(), work_.vx.data(), work_.vy.data());
 }
 
 void Simulation::nodal_velocity(const double* px, const double* py, double* vx, double* vy) {
   const StepScratch& w = work_;
-  for (std::size_t i = 0; i < grid.nodes(); ++i) {
+  for (std::size_t i = 0; i < grid_.nodes(); ++i) {
     const double m = w.mass[i];
     vx[i] = m > 0.0 ? px[i] / m : 0.0;
     vy[i] = m > 0.0 ? py[i] / m : 0.0;
@@ -145,7 +161,7 @@ void Simulation::nodal_velocity(const double* px, const double* py, double* vx, 
 
 void Simulation::update_stress(const double* vx, const double* vy, double dt_half) {
   StepScratch& w = work_;
-  Particles& P = particles;
+  Particles& P = particles_;
   const int T = w.scatter.threads();
   std::vector<long long> failed(T, -1);
   std::vector<std::string> messages(T), reproducers(T);
@@ -168,11 +184,11 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
     e[1] += L[3] * dt_half;
     e[2] += 0.5 * (L[1] + L[2]) * dt_half;
     std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
-    const acst_status st = materials[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p, L,
+    const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p, L,
                                                             dt_half, reproducer);
     if (st.code != ACST_OK && failed[t] < 0) {
       failed[t] = static_cast<long long>(p);
-      messages[t] = "material '" + materials[P.material[p]]->name() + "': " + st.message;
+      messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
     }
   });
   for (int t = 0; t < T; ++t)
@@ -181,8 +197,8 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
 
 void Simulation::xpic_velocity(int order) {
   StepScratch& w = work_;
-  Particles& P = particles;
-  const std::size_t N = grid.nodes();
+  Particles& P = particles_;
+  const std::size_t N = grid_.nodes();
   // v(m) = sum_k dv(k), dv(1) = v_L, dv(k) = dv(k-1) - S+S dv(k-1), constrained parts of dv(k>1) zero.
   std::vector<double> dvx(w.vx), dvy(w.vy);
   w.xpx = w.vx;
@@ -223,23 +239,23 @@ void Simulation::step() {
   compute_shape_functions();
   map_mass_and_momentum();
   apply_constraints();
-  update_stress(work_.vx.data(), work_.vy.data(), 0.5 * dt);  // first half, with v_L
+  update_stress(work_.vx.data(), work_.vy.data(), 0.5 * clock_.dt);  // first half, with v_L
   internal_force_and_reactions();
   update_particles();
   remap_momentum();
-  update_stress(work_.ux.data(), work_.uy.data(), 0.5 * dt);  // second half, with the re-mapped v
+  update_stress(work_.ux.data(), work_.uy.data(), 0.5 * clock_.dt);  // second half, with the re-mapped v
   advance_boundaries();
 }
 
 void Simulation::refresh_time_step() {
-  if (step_count > 0 && step_count % settings.wave_speed_every == 0) refresh_wave_speeds();
-  dt = stable_time_step();
+  if (clock_.step > 0 && clock_.step % settings_.wave_speed_every == 0) refresh_wave_speeds();
+  clock_.dt = stable_time_step();
 }
 
 // Mass and momentum to the grid, the walls' mirror images folded in.
 void Simulation::map_mass_and_momentum() {
   StepScratch& w = work_;
-  Particles& P = particles;
+  Particles& P = particles_;
   const std::size_t n = P.n;
   {
     double* out[3] = {w.mass.data(), w.ax.data(), w.ay.data()};
@@ -261,12 +277,12 @@ void Simulation::map_mass_and_momentum() {
 // Internal force, weight and surcharge; the walls' and the constraints' reactions; a = f/m.
 void Simulation::internal_force_and_reactions() {
   StepScratch& w = work_;
-  Particles& P = particles;
+  Particles& P = particles_;
   const std::size_t n = P.n;
-  const std::size_t N = grid.nodes();
+  const std::size_t N = grid_.nodes();
   {
     double* out[2] = {w.fx.data(), w.fy.data()};
-    const double g = settings.gravity, q = surcharge;
+    const double g = settings_.gravity, q = boundaries_.surcharge;
     w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
       const double V = kilo * P.volume(p);
       const double* s = &P.stress[6 * p];
@@ -280,7 +296,7 @@ void Simulation::internal_force_and_reactions() {
   }
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
-  reaction.fill(Reaction{});
+  reaction_.fill(Reaction{});
   w.fx_body = w.fx;
   w.fy_body = w.fy;
   fold(w.fx.data(), FieldKind::x);
@@ -291,13 +307,13 @@ void Simulation::internal_force_and_reactions() {
       continue;
     }
     const double share = w.mass_body[i] / w.mass[i];
-    const int wall = walls.wall_of(static_cast<int>(i % grid.nx), static_cast<int>(i / grid.nx), grid);
+    const int wall = boundaries_.walls.wall_of(static_cast<int>(i % grid_.nx), static_cast<int>(i / grid_.nx), grid_);
     if (wall != free_node) {
-      reaction[wall].fx += share * w.fx[i] - w.fx_body[i];
-      reaction[wall].fy += share * w.fy[i] - w.fy_body[i];
+      reaction_[wall].fx += share * w.fx[i] - w.fx_body[i];
+      reaction_[wall].fy += share * w.fy[i] - w.fy_body[i];
     }
-    if (w.constraints.set_x[i] != free_node) reaction[w.constraints.set_x[i]].fx -= share * w.fx[i];
-    if (w.constraints.set_y[i] != free_node) reaction[w.constraints.set_y[i]].fy -= share * w.fy[i];
+    if (w.constraints.set_x[i] != free_node) reaction_[w.constraints.set_x[i]].fx -= share * w.fx[i];
+    if (w.constraints.set_y[i] != free_node) reaction_[w.constraints.set_y[i]].fy -= share * w.fy[i];
     // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
     if (w.constraints.set_x[i] != free_node) w.fx[i] = 0.0;
     if (w.constraints.set_y[i] != free_node) w.fy[i] = 0.0;
@@ -309,12 +325,12 @@ void Simulation::internal_force_and_reactions() {
 // Particle velocities and positions: FLIP, or XPIC(m) (PIC = XPIC(1)), with damping.
 void Simulation::update_particles() {
   StepScratch& w = work_;
-  Particles& P = particles;
+  Particles& P = particles_;
   const std::size_t n = P.n;
   const int T = w.scatter.threads();
-  const bool xpic = is_xpic_step(step_count);
-  if (xpic) xpic_velocity(settings.update == ParticleUpdate::PIC ? 1 : settings.xpic_order);
-  const double ag = settings.grid_damping, ap = settings.particle_damping;
+  const bool xpic = is_xpic_step(clock_.step);
+  if (xpic) xpic_velocity(settings_.update == ParticleUpdate::PIC ? 1 : settings_.xpic_order);
+  const double ag = settings_.grid_damping, ap = settings_.particle_damping;
   parallel_for(T, n, [&](int, std::size_t p) {
     double svx = 0, svy = 0, sax = 0, say = 0, smx = 0, smy = 0;
     w.stencil(p, [&](std::size_t i, double S, double, double) {
@@ -330,23 +346,23 @@ void Simulation::update_particles() {
     const double vx0 = P.vx[p], vy0 = P.vy[p];
     double vx1, vy1;
     if (xpic) {
-      vx1 = smx + sax * dt - (ag * svx + ap * vx0) * dt;
-      vy1 = smy + say * dt - (ag * svy + ap * vy0) * dt;
+      vx1 = smx + sax * clock_.dt - (ag * svx + ap * vx0) * clock_.dt;
+      vy1 = smy + say * clock_.dt - (ag * svy + ap * vy0) * clock_.dt;
     } else {
-      vx1 = vx0 + (sax - ag * svx - ap * vx0) * dt;
-      vy1 = vy0 + (say - ag * svy - ap * vy0) * dt;
+      vx1 = vx0 + (sax - ag * svx - ap * vx0) * clock_.dt;
+      vy1 = vy0 + (say - ag * svy - ap * vy0) * clock_.dt;
     }
     P.vx[p] = vx1;
     P.vy[p] = vy1;
-    P.x[p] += (svx + 0.5 * (vx1 - vx0)) * dt;
-    P.y[p] += (svy + 0.5 * (vy1 - vy0)) * dt;
+    P.x[p] += (svx + 0.5 * (vx1 - vx0)) * clock_.dt;
+    P.y[p] += (svy + 0.5 * (vy1 - vy0)) * clock_.dt;
   });
 }
 
 // Momentum re-extrapolated from the new particle velocities; the constrained velocity field.
 void Simulation::remap_momentum() {
   StepScratch& w = work_;
-  Particles& P = particles;
+  Particles& P = particles_;
   const std::size_t n = P.n;
   {
     double* out[2] = {w.ux.data(), w.uy.data()};
@@ -365,9 +381,9 @@ void Simulation::remap_momentum() {
 
 // The footing moves on (and counts its work); then the clock.
 void Simulation::advance_boundaries() {
-  footing.advance(reaction[reaction_footing], dt);
-  time += dt;
-  ++step_count;
+  boundaries_.footing.advance(reaction_[reaction_footing], clock_.dt);
+  clock_.time += clock_.dt;
+  ++clock_.step;
 }
 
 }  // namespace acst::mpm

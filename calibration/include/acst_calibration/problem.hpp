@@ -112,9 +112,6 @@ class Problem {
 // (and at an absolute floor for the axis) so that flat series do not blow up.
 double series_scale(const std::vector<double>& measured, const std::string& axis);
 
-// Linear interpolation in increasing x; NaN outside [x.front(), x.back()].
-double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at);
-
 // Peak friction angle (deg) of a stress state: asin((s1 - s3)/(s1 + s3)) over principal stresses.
 double friction_angle_deg(const Sym& stress);
 

@@ -41,29 +41,47 @@ struct Settings {
   int threads = 0;                // 0: OpenMP default
 };
 
+// The boundaries that load the body besides its weight (walls are geometry, kept with them).
+struct Boundaries {
+  Walls walls;
+  Footing footing;         // inactive unless the scene has one
+  double surcharge = 0.0;  // kPa on the particles with a surcharge_length
+};
+
+// Where a run stands in time (checkpointed).
+struct Clock {
+  long long step = 0;
+  double time = 0.0, dt = 0.0;
+};
+
+// The simulation owns its state; hosts read it through const accessors. The one mutable door
+// is particles(), for initial conditions before the first step (tests set velocities there);
+// a checkpoint comes back through restore().
 class Simulation {
  public:
-  Simulation(Grid grid, Walls walls, Settings settings, std::vector<std::shared_ptr<const Material>> materials);
+  // `particle_half_width` is l in cells: 1/(2 n) for n particles per cell and direction.
+  // Checks the particles lie on the grid with room for the stencil; computes wave speeds.
+  Simulation(Grid grid, Boundaries boundaries, Settings settings,
+             std::vector<std::shared_ptr<const Material>> materials, Particles particles,
+             double particle_half_width);
 
-  Grid grid;
-  Walls walls;
-  Footing footing;  // inactive unless the scene has one
-  Settings settings;
-  std::vector<std::shared_ptr<const Material>> materials;
-  Particles particles;
-  double surcharge = 0.0;  // kPa on the particles with a surcharge_length
-  double particle_half_width = 0.5;  // l in cells: 1/(2 n) for n particles per cell and direction
-
-  long long step_count = 0;
-  double time = 0.0, dt = 0.0;
-
-  // Reactions of the last step (force the constraint applies to the soil, N/m).
-  std::array<Reaction, reaction_sets> reaction{};
-
-  // Checks the particles lie on the grid with room for the stencil; refreshes wave speeds.
-  void prepare();
   // Advances one step; throws SimulationError naming step and particle on a material failure.
   void step();
+  // Continues from a checkpoint: particles, clock and footing motion of the same scene.
+  void restore(Particles particles, const Clock& clock, const Footing::Motion& motion);
+
+  const Grid& grid() const { return grid_; }
+  const Walls& walls() const { return boundaries_.walls; }
+  const Footing& footing() const { return boundaries_.footing; }
+  const Settings& settings() const { return settings_; }
+  const std::vector<std::shared_ptr<const Material>>& materials() const { return materials_; }
+  const Particles& particles() const { return particles_; }
+  Particles& particles() { return particles_; }
+  const Clock& clock() const { return clock_; }
+  long long step_count() const { return clock_.step; }
+  double time() const { return clock_.time; }
+  // Force the boundary applied to the body over the last step, N/m.
+  const Reaction& reaction(ReactionSet set) const { return reaction_[set]; }
   double kinetic_energy() const;
   bool is_xpic_step(long long step) const;
 
@@ -79,14 +97,23 @@ class Simulation {
   void remap_momentum();
   void advance_boundaries();
 
+  void prepare();
   void refresh_wave_speeds();
   double stable_time_step() const;
   // Velocity = momentum / mass with the constraints applied (0 on nodes without mass).
   void nodal_velocity(const double* px, const double* py, double* vx, double* vy);
   void xpic_velocity(int order);
-  void fold(double* field, FieldKind kind) const { walls.fold(field, kind, grid); }
+  void fold(double* field, FieldKind kind) const { boundaries_.walls.fold(field, kind, grid_); }
   [[noreturn]] void fail(std::size_t particle, const std::string& what, const std::string& reproducer = "") const;
 
+  Grid grid_;
+  Boundaries boundaries_;
+  Settings settings_;
+  std::vector<std::shared_ptr<const Material>> materials_;
+  Particles particles_;
+  double particle_half_width_ = 0.5;
+  Clock clock_;
+  std::array<Reaction, reaction_sets> reaction_{};
   StepScratch work_;  // owned: a copy of a Simulation has its own
 };
 
