@@ -43,7 +43,7 @@ TEST(MpmCheckpoint, ResumedRunContinuesBitForBit) {
   for (int k = 0; k < 45; ++k) first.step();
   RunState state;
   state.vtk_frames = 3;
-  state.history.push_back(LoadRecord{45, first.time(), 0.01, 0.02, 3.0, 0.5, 10.0, 1.0, 2.0});
+  state.history.push_back(LoadRecord{45, first.time(), 0.01, 0.02, 3.0, 0.5, 0.1, 10.0, 0.001, 1.0, 2.0});
   const std::string file = (std::filesystem::temp_directory_path() / "acst_mpm_checkpoint_test.bin").string();
   write_checkpoint(file, scene, first, state);
 

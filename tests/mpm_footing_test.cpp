@@ -1,9 +1,13 @@
-// The footing's reaction readout: (1) a rigid plate over the whole width of a confined elastic
-// layer gives V = W M S / H (uniaxial strain); (2) a rough rigid strip footing on weightless
-// von Mises (Tresca-like in plane strain) soil reaches Prandtl's q_ult = (2 + pi) s_u.
+// The contact footing (docs/mpm.md, "The footing") against closed forms: the rigid plate on a
+// confined elastic layer, Prandtl's bearing capacity on weightless Tresca soil (rough and smooth,
+// two cells), a load that rises smoothly through cell crossings, no tension and no load once
+// separated, Coulomb friction capping the horizontal load, and no moment under a centred footing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "mpm_scenes.hpp"
 
@@ -13,20 +17,62 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-double mean_V(Simulation& s, double until_time) {  // kN/m, mean over the steps until `until_time`
+struct Period {  // loads averaged over one period of steps, as the runner records them
+  double S = 0, V = 0, H = 0, M = 0, penetration = 0;
+};
+
+// Steps until `done`, averaging V, H (kN/m) and M (kN m/m) over periods of `every` steps.
+template <class Done>
+std::vector<Period> run(Simulation& s, int every, Done done) {
+  std::vector<Period> out;
+  Period acc;
+  int n = 0;
+  while (!done(s)) {
+    s.step();
+    const Reaction& r = s.reaction(reaction_footing);
+    acc.V += -r.fy / 1000.0;
+    acc.H += r.fx / 1000.0;
+    acc.M += s.contact().moment / 1000.0;
+    acc.penetration = std::max(acc.penetration, s.contact().max_penetration);
+    if (++n == every) {
+      acc.S = s.footing().settlement();
+      acc.V /= n, acc.H /= n, acc.M /= n;
+      out.push_back(acc);
+      acc = Period{};
+      n = 0;
+    }
+  }
+  return out;
+}
+
+double mean_q(const std::vector<Period>& rows, double B, double from_S, double to_S) {
   double sum = 0;
   int n = 0;
-  while (s.time() < until_time) {
-    s.step();
-    sum += -s.reaction(reaction_footing).fy / 1000.0;
-    ++n;
-  }
-  return sum / n;
+  for (const Period& r : rows)
+    if (r.S >= from_S && r.S <= to_S) sum += r.V / B, ++n;
+  return n > 0 ? sum / n : NAN;
+}
+
+std::string tresca(double h, const std::string& interface, double speed, const std::string& contact = "penalty") {
+  // B = 1 m, soil 4 B x 2 B (Prandtl's mechanism reaches 1.5 B from the centre and 0.7 B deep),
+  // s_u = 10 kPa, E = 1000 s_u, no weight.
+  return R"({"name": "prandtl", "grid": {"cell_size": )" + std::to_string(h) + R"(},
+    "materials": {"clay": {"model": "von_mises", "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
+    "bodies": [{"material": "clay", "x_range": [0, 4], "y_range": [0, 2], "density": 1000}],
+    "footing": {"width": 1.0, "centre_x": 2.0, "speed": )" + std::to_string(speed) + R"(, "interface": ")" + interface + R"(", "contact": ")" + contact + R"("},
+    "solver": {"grid_damping": 2, "particle_update": "XPIC", "xpic_order": 4, "xpic_every": 20},
+    "stop": {"S_over_B": 0.1}})";
+}
+
+// q = V/B averaged over S/B 0.05-0.1 (past failure) on the Tresca scene.
+double prandtl_q(double h, const std::string& interface) {
+  Simulation s = mpm_test::build(tresca(h, interface, 0.1));
+  return mean_q(run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.1; }), 1.0, 0.05, 0.1);
 }
 
 }  // namespace
 
-TEST(FootingReaction, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffness) {
+TEST(FootingContact, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffness) {
   const double W = 1.0, H = 2.0, E = 1e4, nu = 0.3, v = 0.002;
   // The plate spans the layer from wall to wall.
   Simulation s = mpm_test::build(mpm_test::elastic_block(
@@ -34,30 +80,137 @@ TEST(FootingReaction, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffness)
       R"("footing": {"width": 1.0, "centre_x": 0.5, "speed": 0.002}, "stop": {"steps": 1})",
       R"({"grid_damping": 10, "particle_update": "FLIP"})"));
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));  // kPa
-  mean_V(s, 2.0);
-  const double t0 = s.time();
-  const double V = mean_V(s, 2.5), S = v * 0.5 * (t0 + s.time());
-  const double expected = W * M * S / H;  // kN/m
-  EXPECT_NEAR(V, expected, 0.02 * expected) << "V " << V << " kN/m at S " << S << " m";
+  run(s, 20, [](const Simulation& x) { return x.time() >= 2.0; });
+  const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.time() >= 2.5; });
+  const Period& last = rows.back();
+  // The soil is compressed by the plate's travel less the contact's penetration.
+  const double S = last.S - last.penetration, expected = W * M * S / H;  // kN/m
+  EXPECT_NEAR(last.V, expected, 0.015 * expected) << "V " << last.V << " kN/m at S " << last.S << " m";
+  EXPECT_LT(last.penetration, 0.02 * last.S) << "the penalty layer is stiff next to the soil layer";
+  EXPECT_LE(last.S, v * s.time() + 1e-12);
 }
 
-TEST(FootingReaction, PrandtlBearingCapacityOnTrescaSoil) {
-  // B = 1 m, soil 6 B x 3 B, h = B / 10, s_u = 10 kPa, E = 1000 s_u, rough footing.
-  const double su = 10.0, B = 1.0;
-  const std::string scene = R"({"name": "prandtl", "grid": {"cell_size": 0.1},
-    "materials": {"clay": {"model": "von_mises", "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
-    "bodies": [{"material": "clay", "x_range": [0, 6], "y_range": [0, 3], "density": 1000}],
-    "footing": {"width": 1.0, "centre_x": 3.0, "speed": 0.05},
-    "solver": {"grid_damping": 2, "particle_update": "XPIC", "xpic_order": 4, "xpic_every": 20},
-    "stop": {"S_over_B": 0.15}})";
-  Simulation s = mpm_test::build(scene);
-  mean_V(s, 0.1 * B / 0.05);  // to S/B = 0.1: past failure
-  const double q = mean_V(s, 0.15 * B / 0.05) / B;
-  const double prandtl = (2 + pi) * su, h = 0.1;
-  // The footing's nodes span [-B/2, B/2]; each carries a tributary width h, so the grid sees a
-  // footing of width B + h. Stated tolerances at h = B/10: q = V/B lies within +15 % of Prandtl
-  // (over-prediction), and V/(B + h) within 5 %.
-  EXPECT_GT(q, prandtl) << "q " << q << " kPa";
-  EXPECT_LT(q, 1.15 * prandtl) << "q " << q << " kPa, (2 + pi) s_u = " << prandtl;
-  EXPECT_NEAR(q * B / (B + h), prandtl, 0.05 * prandtl);
+TEST(FootingContact, LoadRisesThroughEveryCellCrossingOnElasticSoil) {
+  // B = 1 m on 4 B x 2 B linear elastic soil, h = B/10, pushed to S/B 0.3 (six cell crossings).
+  Simulation s = mpm_test::build(mpm_test::elastic_block(
+      4.0, 2.0, 0.1, 1e4, 0.3, 1000.0, R"("footing": {"width": 1.0, "centre_x": 2.0, "speed": 0.1}, "stop": {"steps": 1})",
+      R"({"grid_damping": 2})"));
+  const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.3; });
+  ASSERT_GT(rows.size(), 100u);
+  double worst_drop = 0, worst_at = 0, deepest = 0, q_max = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const double drop = (rows[i - 1].V - rows[i].V) / rows[i - 1].V;
+    if (rows[i - 1].V > 0 && drop > worst_drop) worst_drop = drop, worst_at = rows[i].S;
+    deepest = std::max(deepest, rows[i].penetration);
+    q_max = std::max(q_max, rows[i].V / 1.0);
+  }
+  // Stated tolerance: no period-average drop above 0.5 % of the load.
+  EXPECT_LT(worst_drop, 0.005) << "drop of " << 100 * worst_drop << " % at S = " << worst_at << " m";
+  // The contact layer compresses like h / factor of soil: q h / (4 M) on average; the footing's
+  // edges carry up to three times the mean pressure. Here q reaches a quarter of M (a load no sand
+  // footing sees), so this is the test's stated bound, not a small number.
+  const double M = 1e4 * 0.7 / (1.3 * 0.4);
+  EXPECT_LT(deepest, 3.0 * q_max * 0.1 / (4.0 * M)) << "deepest overlap " << deepest << " m at q_max " << q_max << " kPa";
+  // Centred and vertical: no horizontal load and no moment beyond rounding.
+  for (const Period& r : rows) {
+    EXPECT_LT(std::fabs(r.H), 1e-5 * r.V + 1e-9);
+    EXPECT_LT(std::fabs(r.M), 1e-5 * r.V * 1.0 + 1e-9);
+  }
+}
+
+// On linear elastic soil the node-row footing also loads smoothly (its new row of nodes barely
+// moves the stiff soil); the artefact needs soil that yields. On Tresca soil past failure, the
+// load of the node-row footing jumps when its base passes the first node row's midpoint (S/B
+// 0.05 at h = B/10: a row of soil nodes joins the footing), while the contact footing's does not.
+// The measure: the largest change between the mean q of adjacent windows of 0.005 B for windows
+// ending between S/B 0.03 and 0.07. Stated tolerances: node rows above 4 % (measured 6.5 %),
+// contact below 3 % (measured 1.5 %).
+TEST(FootingContact, NodeRowsJumpAtARowCrossingWhereContactDoesNot) {
+  auto worst_change = [](const std::string& contact) {
+    Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1, contact));
+    const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.075; });
+    double worst = 0;
+    for (double S = 0.03; S <= 0.07 + 1e-9; S += 0.001) {
+      const double before = mean_q(rows, 1.0, S - 0.005, S), after = mean_q(rows, 1.0, S, S + 0.005);
+      worst = std::max(worst, std::fabs(after - before) / before);
+    }
+    return worst;
+  };
+  const double rows = worst_change("node_rows"), contact = worst_change("penalty");
+  EXPECT_GT(rows, 0.04) << "node rows: largest change " << 100 * rows << " %";
+  EXPECT_LT(contact, 0.03) << "contact: largest change " << 100 * contact << " %";
+}
+
+TEST(FootingContact, PrandtlBearingCapacityOnTrescaSoilRoughAndSmooth) {
+  const double prandtl = (2 + pi) * 10.0;  // kPa
+  // Stated tolerance at h = B/10: q = V/B within +25 % of Prandtl (measured +17 to +21 %), never
+  // below. An over-prediction that shrinks with the cell (next test): the B-splines carry the
+  // footing's edge into the velocity field over about 1.5 h, so the mechanism starts wider than B.
+  for (const char* interface : {"rough", "smooth"}) {
+    const double q = prandtl_q(0.1, interface);
+    EXPECT_GT(q, prandtl) << interface << ": q " << q << " kPa";
+    EXPECT_LT(q, 1.25 * prandtl) << interface << ": q " << q << " kPa, (2 + pi) s_u = " << prandtl;
+  }
+}
+
+TEST(FootingContact, PrandtlErrorShrinksWithTheCell) {
+  const double prandtl = (2 + pi) * 10.0;
+  const double coarse = prandtl_q(0.1, "rough"), fine = prandtl_q(0.05, "rough");
+  EXPECT_LT(fine - prandtl, 0.75 * (coarse - prandtl)) << "q " << coarse << " at h = B/10, " << fine << " at B/20";
+  EXPECT_GT(fine, prandtl);
+  EXPECT_LT(fine, 1.16 * prandtl) << "q " << fine << " kPa at h = B/20 (measured +13 %)";
+}
+
+TEST(FootingContact, NoTensionAndNoLoadOnceSeparated) {
+  // Pushed to S/B 0.02 on elastic soil, then pulled back up at the same speed. Smooth, every
+  // contact force is a push, so V never turns negative; rough, friction on the footing's sides
+  // may pull up while they are pressed. Both carry nothing once apart.
+  for (const char* interface : {"smooth", "rough"}) {
+    Simulation s = mpm_test::build(mpm_test::elastic_block(
+        4.0, 2.0, 0.1, 1e4, 0.3, 1000.0,
+        std::string(R"("footing": {"width": 1.0, "centre_x": 2.0, "speed": 0.1, "unload_at_S_over_B": 0.02, "interface": ")") +
+            interface + R"("}, "stop": {"steps": 1})",
+        R"({"grid_damping": 2})"));
+    const bool smooth = std::string(interface) == "smooth";
+    bool pressed = false;
+    while (s.footing().settlement() > -0.02) {
+      s.step();
+      const Reaction& r = s.reaction(reaction_footing);
+      if (smooth) {
+        ASSERT_LE(r.fy, 0.0) << "the footing never pulls the soil (step " << s.step_count() << ")";
+      }
+      pressed = pressed || -r.fy > 0.0;
+      if (s.footing().settlement() < -0.01) {  // a tenth of a cell above the unloaded surface
+        ASSERT_EQ(r.fx, 0.0) << interface;
+        ASSERT_EQ(r.fy, 0.0) << interface;
+        ASSERT_EQ(s.contact().touching, 0u) << interface;
+      }
+    }
+    EXPECT_TRUE(pressed) << interface;
+    EXPECT_TRUE(s.footing().motion().unloading) << interface;
+  }
+}
+
+TEST(FootingContact, CoulombFrictionCapsTheHorizontalLoad) {
+  // Inclined 30 deg from the vertical: without friction limits the footing would drag the soil
+  // with H/V near tan 30; with mu = 0.2 it slides and H stays at mu V.
+  const double mu = 0.2;
+  Simulation s = mpm_test::build(mpm_test::elastic_block(
+      4.0, 2.0, 0.1, 1e4, 0.3, 1000.0,
+      R"("footing": {"width": 1.0, "centre_x": 2.0, "speed": 0.1, "inclination_deg": 30, "interface": "coulomb",
+                     "friction_coefficient": 0.2}, "stop": {"steps": 1})",
+      R"({"grid_damping": 2})"));
+  const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.05; });
+  for (const Period& r : rows) EXPECT_LE(std::fabs(r.H), mu * r.V * (1 + 1e-9) + 1e-9) << "at S " << r.S;
+  const Period& last = rows.back();
+  EXPECT_GT(last.H, 0.9 * mu * last.V) << "sliding toward +x: H " << last.H << " V " << last.V;
+}
+
+TEST(FootingContact, RoughFootingDragsTheSoilBeyondThatFriction) {
+  Simulation s = mpm_test::build(mpm_test::elastic_block(
+      4.0, 2.0, 0.1, 1e4, 0.3, 1000.0,
+      R"("footing": {"width": 1.0, "centre_x": 2.0, "speed": 0.1, "inclination_deg": 30}, "stop": {"steps": 1})",
+      R"({"grid_damping": 2})"));
+  const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.05; });
+  EXPECT_GT(rows.back().H, 0.3 * rows.back().V) << "no slip while pressed";
 }

@@ -58,6 +58,28 @@ TEST(MpmScene, ErrorsNameThePath) {
   expect_error("{not json", "/", "not valid JSON");
 }
 
+TEST(MpmScene, FootingContactChoicesAreChecked) {
+  const std::string f = R"("speed": 0.01)";
+  expect_error(replaced(f, R"("speed": 0.01, "contact": "glue")"), "/footing/contact", "penalty, node_rows");
+  expect_error(replaced(f, R"("speed": 0.01, "interface": "sticky")"), "/footing/interface", "rough, smooth, coulomb");
+  expect_error(replaced(f, R"("speed": 0.01, "interface": "coulomb")"), "/footing", "friction_coefficient");
+  expect_error(replaced(f, R"("speed": 0.01, "interface": "coulomb", "friction_coefficient": -0.1)"),
+               "/footing/friction_coefficient", "out of range");
+  expect_error(replaced(f, R"("speed": 0.01, "friction_coefficient": 0.3)"), "/footing/friction_coefficient",
+               "only with interface 'coulomb'");
+  expect_error(replaced(f, R"("speed": 0.01, "contact": "node_rows", "interface": "coulomb", "friction_coefficient": 0.3)"),
+               "/footing/interface", "needs contact 'penalty'");
+  expect_error(replaced(f, R"("speed": 0.01, "contact": "node_rows", "penalty_factor": 2)"), "/footing/penalty_factor",
+               "only with contact 'penalty'");
+  expect_error(replaced(f, R"("speed": 0.01, "penalty_factor": 0)"), "/footing/penalty_factor", "out of range");
+  expect_error(replaced(f, R"("speed": 0.01, "unload_at_S_over_B": 0)"), "/footing/unload_at_S_over_B", "out of range");
+  expect_error(replaced(f, R"("speed": 0.01, "unload_at_S_over_B": 0.05)"), "/stop/S_over_B", "stops by time or steps");
+  const Scene s = parse_scene(replaced(f, R"("speed": 0.01, "interface": "coulomb", "friction_coefficient": 0.4)"));
+  EXPECT_EQ(s.footing->interface, FootingInterface::coulomb);
+  EXPECT_EQ(s.footing->friction_coefficient, 0.4);
+  EXPECT_EQ(s.footing->contact, FootingContact::penalty);
+}
+
 TEST(MpmScene, SandNeedsAVoidRatio) {
   const std::string sand = R"({"name": "s", "grid": {"cell_size": 0.5},
     "materials": {"sand": ")" + std::string(ACST_SOURCE_DIR) + R"(/data/parameters/toyoura_acst_calibrated.json"},

@@ -76,7 +76,11 @@ Simulation build_simulation(const Scene& s) {
     f.base_y = column_top(s, s.footing->centre_x);
     f.speed = s.footing->speed;
     f.inclination = s.footing->inclination_deg * pi / 180.0;
-    f.rough = s.footing->rough;
+    f.contact = s.footing->contact;
+    f.interface = s.footing->interface;
+    f.friction = s.footing->friction_coefficient;
+    f.penalty_factor = s.footing->penalty_factor;
+    f.unload_at = s.footing->unload_at_S_over_B * s.footing->width;
     if (!std::isfinite(f.base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
     boundaries.footing = Footing(f);
   }

@@ -9,7 +9,7 @@
 namespace acst::mpm {
 namespace {
 
-constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '1'};
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '2'};
 
 struct Writer {
   std::string out;
@@ -66,7 +66,7 @@ template <class P, class F>
 void particle_arrays(P& particles, F&& f) {
   auto& p = particles;
   for (auto* v : {&p.x, &p.y, &p.x_initial, &p.y_initial, &p.vx, &p.vy, &p.mass, &p.weight_mass, &p.volume_initial,
-                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.wave_speed})
+                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.wave_speed, &p.contact_friction})
     f(*v);
   f(p.material);
 }
@@ -79,10 +79,13 @@ void run_fields(IO& io, C& clock, M& motion, State& st) {
   io.pod(motion.dx);
   io.pod(motion.dy);
   io.pod(motion.work);
+  io.pod(motion.unloading);
   io.vec(st.history);
   io.vec(st.every_step);
   io.pod(st.sum_V);
   io.pod(st.sum_H);
+  io.pod(st.sum_M);
+  io.pod(st.max_penetration);
   io.pod(st.period_steps);
   io.pod(st.vtk_frames);
   io.vec(st.vtk_times);

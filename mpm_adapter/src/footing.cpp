@@ -5,14 +5,21 @@
 
 namespace acst::mpm {
 
-double Footing::vx() const { return spec_.speed * std::sin(spec_.inclination); }
-double Footing::vy() const { return -spec_.speed * std::cos(spec_.inclination); }
+double Footing::vx() const {
+  const double v = spec_.speed * std::sin(spec_.inclination);
+  return motion_.unloading ? -v : v;
+}
+
+double Footing::vy() const {
+  const double v = -spec_.speed * std::cos(spec_.inclination);
+  return motion_.unloading ? -v : v;
+}
 
 void Footing::constrain(const Grid& grid, NodeConstraints& c) const {
-  if (!active_) return;
+  if (!active_ || spec_.contact != FootingContact::node_rows) return;
   const double h = grid.h, tol = 1e-9 * h;
   const double vfx = vx(), vfy = vy();
-  const double centre = spec_.centre_x + motion_.dx, half = 0.5 * spec_.width;
+  const double centre = centre_x(), half = 0.5 * spec_.width;
   const long long j_base = std::llround((base_y() - grid.y0) / h);
   for (int j = static_cast<int>(std::max(0LL, j_base)); j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
@@ -21,7 +28,7 @@ void Footing::constrain(const Grid& grid, NodeConstraints& c) const {
       const std::size_t k = static_cast<std::size_t>(j) * grid.nx + i;
       c.set_y[k] = reaction_footing;
       c.vy[k] = vfy;
-      if (spec_.rough) {
+      if (spec_.interface != FootingInterface::smooth) {
         c.set_x[k] = reaction_footing;
         c.vx[k] = vfx;
       }
@@ -34,6 +41,7 @@ void Footing::advance(const Reaction& on_soil, double dt) {
   motion_.work += (on_soil.fx * vfx + on_soil.fy * vfy) * dt;
   motion_.dx += vfx * dt;
   motion_.dy += vfy * dt;
+  if (spec_.unload_at > 0.0 && !motion_.unloading && settlement() >= spec_.unload_at) motion_.unloading = true;
 }
 
 }  // namespace acst::mpm

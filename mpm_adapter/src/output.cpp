@@ -34,12 +34,15 @@ std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& his
   std::string out = "# acst_mpm load-settlement record of scene '" + scene.name + "'\n";
   out += "# loads per metre out of plane, averaged over each period of " + std::to_string(scene.solver.xpic_every) +
          " steps (one row per step with every_step_csv); V: vertical load of the footing on the soil (positive "
-         "downward), H: horizontal (positive toward +x), q = V/B; S: settlement of the footing (positive downward)\n";
-  out += "step,time_s,S_m,S_over_B,V_kN_per_m,H_kN_per_m,q_kPa,kinetic_J_per_m,footing_work_J_per_m,kinetic_over_work\n";
+         "downward), H: horizontal (positive toward +x), q = V/B; M: moment of the footing's load on the soil about "
+         "the centre of its base (counter-clockwise positive); S: settlement of the footing (positive downward); "
+         "penetration: deepest overlap of a particle with the contact footing\n";
+  out += "step,time_s,S_m,S_over_B,V_kN_per_m,H_kN_per_m,M_kNm_per_m,q_kPa,penetration_m,kinetic_J_per_m,"
+         "footing_work_J_per_m,kinetic_over_work\n";
   for (const LoadRecord& r : history) {
     out += std::to_string(r.step) + ',';
-    for (double v : {r.time, r.settlement, r.S_over_B, r.V_kN_per_m, r.H_kN_per_m, r.q_kPa, r.kinetic_J_per_m,
-                     r.footing_work_J_per_m})
+    for (double v : {r.time, r.settlement, r.S_over_B, r.V_kN_per_m, r.H_kN_per_m, r.M_kNm_per_m, r.q_kPa,
+                     r.penetration_m, r.kinetic_J_per_m, r.footing_work_J_per_m})
       put(out, v), out += ',';
     put(out, r.footing_work_J_per_m > 0.0 ? r.kinetic_J_per_m / r.footing_work_J_per_m : 0.0);
     out += '\n';

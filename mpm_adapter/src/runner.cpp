@@ -1,5 +1,6 @@
 #include "acst_mpm/runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -97,7 +98,7 @@ class Run {
     return static_cast<double>(sim_.step_count()) / static_cast<double>(*scene_.stop.steps);
   }
 
-  LoadRecord current(double V, double H) const {
+  LoadRecord current(double V, double H, double M, double penetration) const {
     LoadRecord r;
     r.step = sim_.step_count();
     r.time = sim_.time();
@@ -105,6 +106,8 @@ class Run {
     r.S_over_B = S_over_B();
     r.V_kN_per_m = V;
     r.H_kN_per_m = H;
+    r.M_kNm_per_m = M;
+    r.penetration_m = penetration;
     r.q_kPa = V / B_;
     r.kinetic_J_per_m = sim_.kinetic_energy();
     r.footing_work_J_per_m = sim_.footing().motion().work;
@@ -114,17 +117,20 @@ class Run {
   void record() {
     const Reaction& f = sim_.reaction(reaction_footing);
     const double V = -f.fy / 1000.0, H = f.fx / 1000.0;  // N/m -> kN/m
+    const double M = sim_.contact().moment / 1000.0, depth = sim_.contact().max_penetration;
     st_.sum_V += V;
     st_.sum_H += H;
-    if (scene_.output.every_step_csv) st_.every_step.push_back(current(V, H));
+    st_.sum_M += M;
+    st_.max_penetration = std::max(st_.max_penetration, depth);
+    if (scene_.output.every_step_csv) st_.every_step.push_back(current(V, H, M, depth));
     if (++st_.period_steps == scene_.solver.xpic_every) close_period();
   }
 
   void close_period() {
     const double n = static_cast<double>(st_.period_steps);
-    const LoadRecord r = current(st_.sum_V / n, st_.sum_H / n);
+    const LoadRecord r = current(st_.sum_V / n, st_.sum_H / n, st_.sum_M / n, st_.max_penetration);
     st_.history.push_back(r);
-    st_.sum_V = st_.sum_H = 0.0;
+    st_.sum_V = st_.sum_H = st_.sum_M = st_.max_penetration = 0.0;
     st_.period_steps = 0;
     if (scene_.footing && r.V_kN_per_m > st_.peak.V_kN_per_m) {
       Snapshot& s = st_.peak;
@@ -224,11 +230,24 @@ class Run {
                                             {"S_ult_over_B", sum.S_ult_over_B},
                                             {"peak_reached", sum.peak_reached},
                                             {"residual_V_kN_per_m", sum.residual_V},
-                                            {"final_S_over_B", S_over_B()}};
+                                            {"final_S_over_B", S_over_B()},
+                                            {"footing_contact", footing_contact_name()},
+                                            {"max_penetration_m", max_penetration()}};
     common::write_file_atomically(path("summary.json"), summary.dump(2) + "\n");
   }
 
   int thread_count_used() const { return thread_count(scene_.solver.threads); }
+
+  std::string footing_contact_name() const {
+    if (!scene_.footing) return "none";
+    return scene_.footing->contact == FootingContact::penalty ? "penalty" : "node_rows";
+  }
+
+  double max_penetration() const {
+    double deepest = 0.0;
+    for (const LoadRecord& r : st_.history) deepest = std::max(deepest, r.penetration_m);
+    return deepest;
+  }
 };
 
 }  // namespace

@@ -100,7 +100,9 @@ Settings read_solver(const json& j, const std::string& p) {
 }
 
 FootingSpec read_footing(const json& j, const std::string& p) {
-  f::allow_keys(j, {"width", "centre_x", "speed", "inclination_deg", "interface"}, p);
+  f::allow_keys(j, {"width", "centre_x", "speed", "inclination_deg", "interface", "friction_coefficient", "contact",
+                    "penalty_factor", "unload_at_S_over_B"},
+                p);
   FootingSpec fs;
   for (const char* k : {"width", "centre_x", "speed"})
     if (!j.contains(k)) f::fail(p, std::string("'") + k + "' is required");
@@ -109,11 +111,33 @@ FootingSpec read_footing(const json& j, const std::string& p) {
   fs.speed = f::number(j["speed"], p + "/speed", f::positive(), "m/s");
   if (j.contains("inclination_deg"))
     fs.inclination_deg = f::number(j["inclination_deg"], p + "/inclination_deg", {-80.0, 80.0}, "deg");
+  if (j.contains("contact")) {
+    const std::string c = f::string(j["contact"], p + "/contact");
+    if (c == "penalty") fs.contact = FootingContact::penalty;
+    else if (c == "node_rows") fs.contact = FootingContact::node_rows;
+    else f::fail(p + "/contact", "'" + c + "' is not one of penalty, node_rows");
+  }
   if (j.contains("interface")) {
     const std::string i = f::string(j["interface"], p + "/interface");
-    if (i != "rough" && i != "smooth") f::fail(p + "/interface", "'" + i + "' is not one of rough, smooth");
-    fs.rough = i == "rough";
+    if (i == "rough") fs.interface = FootingInterface::rough;
+    else if (i == "smooth") fs.interface = FootingInterface::smooth;
+    else if (i == "coulomb") fs.interface = FootingInterface::coulomb;
+    else f::fail(p + "/interface", "'" + i + "' is not one of rough, smooth, coulomb");
   }
+  if (fs.interface == FootingInterface::coulomb) {
+    if (!j.contains("friction_coefficient")) f::fail(p, "interface 'coulomb' needs 'friction_coefficient'");
+    fs.friction_coefficient = f::number(j["friction_coefficient"], p + "/friction_coefficient", {0.0, 10.0});
+    if (fs.contact == FootingContact::node_rows)
+      f::fail(p + "/interface", "'coulomb' needs contact 'penalty' (node rows are rough or smooth only)");
+  } else if (j.contains("friction_coefficient")) {
+    f::fail(p + "/friction_coefficient", "only with interface 'coulomb'");
+  }
+  if (j.contains("penalty_factor")) {
+    if (fs.contact != FootingContact::penalty) f::fail(p + "/penalty_factor", "only with contact 'penalty'");
+    fs.penalty_factor = f::number(j["penalty_factor"], p + "/penalty_factor", {0.01, 100.0});
+  }
+  if (j.contains("unload_at_S_over_B"))
+    fs.unload_at_S_over_B = f::number(j["unload_at_S_over_B"], p + "/unload_at_S_over_B", {0.0, 10.0, true, false});
   return fs;
 }
 
@@ -205,6 +229,8 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   const std::string stop = f::one_of(j["stop"], {"S_over_B", "time", "steps"}, "/stop");
   if (stop == "S_over_B") {
     if (!s.footing) f::fail("/stop/S_over_B", "needs a /footing");
+    if (s.footing->unload_at_S_over_B > 0)
+      f::fail("/stop/S_over_B", "a footing that unloads (unload_at_S_over_B) stops by time or steps");
     s.stop.S_over_B = f::number(j["stop"]["S_over_B"], "/stop/S_over_B", {0.0, 5.0, true, false});
   }
   if (stop == "time") s.stop.time = f::number(j["stop"]["time"], "/stop/time", f::positive(), "s");

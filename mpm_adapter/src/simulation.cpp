@@ -26,6 +26,7 @@ void Particles::resize(std::size_t count, int nstate) {
   strain.assign(3 * n, 0.0);
   statev.assign(static_cast<std::size_t>(nstate) * n, 0.0);
   material.assign(n, 0);
+  contact_friction.assign(n, 0.0);
 }
 
 double Particles::volume(std::size_t p) const {
@@ -68,6 +69,7 @@ void Simulation::prepare() {
   for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
   w.pvx.assign(n, 0.0);
   w.pvy.assign(n, 0.0);
+  w.contact.assign(boundaries_.footing.uses_contact() ? n : 0, ContactForce{});
   w.nx = grid_.nx;
   w.scatter.configure(settings_.threads, N);
   if (clock_.step == 0 || particles_.wave_speed.empty() ||
@@ -92,15 +94,32 @@ void Simulation::refresh_wave_speeds() {
     if (!e.empty()) throw SimulationError("step " + std::to_string(clock_.step) + ", " + e);
 }
 
+// The contact's penalty stiffness for particle p: k_n = factor * M / h, M = rho c^2 its own
+// constrained modulus at its current density (the wave speed is refreshed with the time step).
+double Simulation::contact_stiffness(std::size_t p) const {
+  const Particles& P = particles_;
+  const double rho = P.density[p] * P.volume_initial[p] / P.volume(p);
+  return boundaries_.footing.spec().penalty_factor * rho * P.wave_speed[p] * P.wave_speed[p] / grid_.h;
+}
+
 double Simulation::stable_time_step() const {
   const Particles& P = particles_;
   const double scale = 1.0 / std::sqrt(settings_.mass_scaling);
-  double fastest = 0.0;
-  for (std::size_t p = 0; p < P.n; ++p)
+  const bool contact = boundaries_.footing.uses_contact();
+  const double width = 2.0 * particle_half_width_ * grid_.h;  // the longest contact of one particle
+  double fastest = 0.0, omega = 0.0;
+  for (std::size_t p = 0; p < P.n; ++p) {
     fastest = std::max(fastest, P.wave_speed[p] * scale + std::hypot(P.vx[p], P.vy[p]));
+    if (contact) omega = std::max(omega, std::sqrt(contact_stiffness(p) * width / P.mass[p]));
+  }
   if (!(fastest > 0.0) || !std::isfinite(fastest))
     throw SimulationError("step " + std::to_string(clock_.step) + ": no finite wave speed for the time step");
-  return settings_.cfl * grid_.h / fastest;
+  double dt = settings_.cfl * grid_.h / fastest;
+  // The stiffest contact spring (a whole particle width pressed) on its particle: dt <= 2 cfl /
+  // omega keeps it stable with the CFL bound's margin (no restriction at one particle per cell
+  // and factor <= 4).
+  if (omega > 0.0) dt = std::min(dt, 2.0 * settings_.cfl / omega);
+  return dt;
 }
 
 double Simulation::kinetic_energy() const {
@@ -240,6 +259,7 @@ void Simulation::step() {
   map_mass_and_momentum();
   apply_constraints();
   update_stress(work_.vx.data(), work_.vy.data(), 0.5 * clock_.dt);  // first half, with v_L
+  footing_contact();
   internal_force_and_reactions();
   update_particles();
   remap_momentum();
@@ -274,6 +294,68 @@ void Simulation::map_mass_and_momentum() {
   fold(w.ay.data(), FieldKind::y);
 }
 
+// The footing's contact force on every particle that touches it; the footing's reaction is their
+// sum, and internal_force_and_reactions applies them to the grid.
+void Simulation::footing_contact() {
+  const Footing& f = boundaries_.footing;
+  if (!f.uses_contact()) return;
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  const double lh = particle_half_width_ * grid_.h;
+  const double dt = clock_.dt;
+  std::vector<ContactForce>& touch = w.contact;
+  parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
+    const double* F = &P.F[4 * p];
+    // The domain's stretch along the axes: the shear terms would tilt its faces, which the flat
+    // footing keeps flat, and under the footing's edge would inflate the box into false overlap.
+    const ContactParticle cp{P.x[p], P.y[p], P.vx[p], P.vy[p], lh * std::fabs(F[0]), lh * std::fabs(F[3]),
+                             P.mass[p], contact_stiffness(p)};
+    touch[p] = f.contact(cp, P.contact_friction[p], dt);
+  });
+  // Summed in particle order: the same result for any thread count.
+  Reaction sum;
+  ContactSummary c;
+  const double xc = f.centre_x(), yc = f.base_y();
+  for (std::size_t p = 0; p < P.n; ++p) {
+    const ContactForce& t = touch[p];
+    if (!t.touching) continue;
+    sum.fx += t.fx;
+    sum.fy += t.fy;
+    c.moment += (t.at_x - xc) * t.fy - (t.at_y - yc) * t.fx;
+    c.max_penetration = std::max(c.max_penetration, t.penetration);
+    ++c.touching;
+  }
+  reaction_[reaction_footing] = sum;
+  contact_ = c;
+}
+
+// Each contact force as a point load where it acts on the footing's face, shared by the four
+// nodes around that point in proportion to hat weight x nodal mass: the load stays within a cell
+// of the footing's width (a particle's own weights would spread it over B + 4 l h + 3 h), and the
+// nodes it moves accelerate together, so a node with little mass (above the soil surface) never
+// takes a stiff share of a contact spring.
+void Simulation::spread_contact_forces() {
+  StepScratch& w = work_;
+  const double h = grid_.h;
+  for (std::size_t p = 0; p < particles_.n; ++p) {
+    const ContactForce& t = w.contact[p];
+    if (!t.touching) continue;
+    const double u = (t.at_x - grid_.x0) / h, v = (t.at_y - grid_.y0) / h;
+    const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
+    const double a = u - i, b = v - j;
+    const std::size_t k0 = static_cast<std::size_t>(j) * grid_.nx + i;
+    const std::size_t k[4] = {k0, k0 + 1, k0 + grid_.nx, k0 + grid_.nx + 1};
+    double wt[4] = {(1 - a) * (1 - b) * w.mass[k[0]], a * (1 - b) * w.mass[k[1]], (1 - a) * b * w.mass[k[2]],
+                    a * b * w.mass[k[3]]};
+    const double sum = wt[0] + wt[1] + wt[2] + wt[3];
+    if (!(sum > 0.0)) continue;  // cannot happen where a particle touches: its nodes carry its mass
+    for (int c = 0; c < 4; ++c) {
+      w.fx[k[c]] += wt[c] / sum * t.fx;
+      w.fy[k[c]] += wt[c] / sum * t.fy;
+    }
+  }
+}
+
 // Internal force, weight and surcharge; the walls' and the constraints' reactions; a = f/m.
 void Simulation::internal_force_and_reactions() {
   StepScratch& w = work_;
@@ -294,9 +376,12 @@ void Simulation::internal_force_and_reactions() {
       });
     });
   }
+  if (boundaries_.footing.uses_contact()) spread_contact_forces();
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
+  const Reaction contact = reaction_[reaction_footing];
   reaction_.fill(Reaction{});
+  if (boundaries_.footing.uses_contact()) reaction_[reaction_footing] = contact;
   w.fx_body = w.fx;
   w.fy_body = w.fy;
   fold(w.fx.data(), FieldKind::x);

@@ -1,22 +1,58 @@
 #pragma once
-// The rigid strip footing as one boundary unit: a rough (or smooth) footing driven at a
-// constant speed at `inclination` (rad) from the downward vertical, toward +x for positive
-// angles: velocity = speed (sin b, -cos b). Grid nodes inside its footprint and at or above its
-// base (nearest node row) move with it. A contact formulation replaces this unit alone.
+// The rigid strip footing as one boundary unit: a rigid body of width B driven at a constant
+// speed at `inclination` (rad) from the downward vertical, toward +x for positive angles:
+// velocity = speed (sin b, -cos b), reversed once the settlement reaches `unload_at` (if set).
+//
+// Two formulations (docs/mpm.md, "The footing"):
+// - penalty contact (the default): the footing is the half-plane body {|x - c| <= B/2, y >= base};
+//   every particle whose domain overlaps it is pushed out through the face its centre lies
+//   beyond (the base for a centre under the footprint) by a force k_n * depth * (contact
+//   length), k_n = factor * M / h with M the particle's own constrained modulus (a contact layer
+//   as stiff as h / factor of that soil), and a dashpot (half critical) on the approach speed
+//   (never pulling), with friction on the base (rough: no slip while pressed;
+//   smooth; or Coulomb with a coefficient) through a tangential spring, and nothing once
+//   separated. The load is a sum over particles, continuous in the footing's position.
+// - node rows (the old formulation, kept to show its artefact): grid nodes inside the footprint
+//   and at or above the base (nearest node row) move with the footing.
+#include <cstddef>
+
 #include "acst_mpm/grid.hpp"
 
 namespace acst::mpm {
+
+enum class FootingContact { penalty, node_rows };
+enum class FootingInterface { rough, smooth, coulomb };
+
+// The part of a particle the contact sees: its centre, velocity, the half-extents of its
+// (deformed) domain, its (inertial) mass and its penalty stiffness k_n (N/m^3: force per metre
+// out of plane, per metre of contact length, per metre of penetration).
+struct ContactParticle {
+  double x, y, vx, vy, half_x, half_y, mass, stiffness;
+};
+
+// The footing's force on one particle (N/m) and where it acts.
+struct ContactForce {
+  double fx = 0.0, fy = 0.0;
+  double at_x = 0.0, at_y = 0.0;  // point of action (for the moment about the footing's centre)
+  double penetration = 0.0;       // depth of overlap, m (0 when apart)
+  bool touching = false;
+};
 
 class Footing {
  public:
   struct Spec {
     double centre_x = 0.0, width = 0.0, base_y = 0.0;  // base_y: the soil surface under it
     double speed = 0.0, inclination = 0.0;
-    bool rough = true;
+    double unload_at = 0.0;  // settlement (m) at which the footing reverses; 0: never
+    FootingContact contact = FootingContact::penalty;
+    FootingInterface interface = FootingInterface::rough;
+    double friction = 0.0;        // Coulomb coefficient (interface coulomb)
+    double penalty_factor = 4.0;  // k_n = factor * M / h
   };
   // How far it has moved and the work it has done on the soil (checkpointed).
   struct Motion {
     double dx = 0.0, dy = 0.0, work = 0.0;  // m, m, J/m
+    bool unloading = false;
   };
 
   Footing() = default;
@@ -26,17 +62,24 @@ class Footing {
   const Spec& spec() const { return spec_; }
   Motion& motion() { return motion_; }
   const Motion& motion() const { return motion_; }
+  double centre_x() const { return spec_.centre_x + motion_.dx; }
   double base_y() const { return spec_.base_y + motion_.dy; }
   double settlement() const { return -motion_.dy; }
+  bool uses_contact() const { return active_ && spec_.contact == FootingContact::penalty; }
 
-  // Prescribes its velocity on the nodes it covers (reaction set reaction_footing).
+  // Node rows: prescribes its velocity on the nodes it covers (reaction set reaction_footing).
   void constrain(const Grid& grid, NodeConstraints& c) const;
+
+  // Penalty contact on one particle. `friction` is the tangential force the base holds on it
+  // (N/m along x), carried from step to step; dt the step.
+  ContactForce contact(const ContactParticle& p, double& friction, double dt) const;
+
   // Moves on by its velocity over dt; `on_soil` is the force it exerts on the soil (N/m).
   void advance(const Reaction& on_soil, double dt);
-
- private:
   double vx() const;
   double vy() const;
+
+ private:
   Spec spec_;
   Motion motion_;
   bool active_ = false;

@@ -17,6 +17,7 @@ struct Particles {
   std::vector<double> statev;   // state_size per particle
   std::vector<double> surcharge_length;  // top-edge length loaded by the surcharge (0: none)
   std::vector<double> wave_speed;
+  std::vector<double> contact_friction;  // tangential force the footing's base holds, N/m along x
   std::vector<int> material;    // index into Simulation::materials
 
   void resize(std::size_t count, int state_size);

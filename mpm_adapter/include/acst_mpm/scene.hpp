@@ -29,7 +29,11 @@ struct BodySpec {
 
 struct FootingSpec {
   double width = 0, centre_x = 0, speed = 0, inclination_deg = 0;
-  bool rough = true;
+  FootingContact contact = FootingContact::penalty;
+  FootingInterface interface = FootingInterface::rough;
+  double friction_coefficient = 0;  // interface "coulomb"
+  double penalty_factor = 4;        // contact "penalty": k_n = factor * M / h
+  double unload_at_S_over_B = 0;    // reverse the footing there (0: never)
 };
 
 struct StopSpec {

@@ -1,7 +1,8 @@
 #pragma once
 // The compact MPM core: 2-D plane strain, explicit, regular grid, B2GIMP shape functions,
 // update-stress-average (USAVG) step, FLIP / PIC / XPIC(m) particle update with grid and
-// particle damping, rigid walls, surcharge, a rigid footing driven at constant velocity.
+// particle damping, rigid walls, surcharge, a rigid footing driven at constant velocity (penalty
+// contact with the particles, or node rows).
 // Units: m, s, kg (per metre out of plane), kPa for stress; forces in N per metre internally,
 // reported in kN/m. Stress in the material ABI's convention: tension positive, Voigt
 // xx yy zz xy xz yz (docs/mpm.md).
@@ -48,6 +49,13 @@ struct Boundaries {
   double surcharge = 0.0;  // kPa on the particles with a surcharge_length
 };
 
+// The footing contact over the last step: moment about the base centre of the footing's force
+// on the soil (N m/m, counter-clockwise positive), deepest penetration (m), particles touching.
+struct ContactSummary {
+  double moment = 0.0, max_penetration = 0.0;
+  std::size_t touching = 0;
+};
+
 // Where a run stands in time (checkpointed).
 struct Clock {
   long long step = 0;
@@ -82,6 +90,7 @@ class Simulation {
   double time() const { return clock_.time; }
   // Force the boundary applied to the body over the last step, N/m.
   const Reaction& reaction(ReactionSet set) const { return reaction_[set]; }
+  const ContactSummary& contact() const { return contact_; }
   double kinetic_energy() const;
   bool is_xpic_step(long long step) const;
 
@@ -92,6 +101,8 @@ class Simulation {
   void map_mass_and_momentum();
   void apply_constraints();
   void update_stress(const double* vx, const double* vy, double dt);
+  void footing_contact();
+  void spread_contact_forces();
   void internal_force_and_reactions();
   void update_particles();
   void remap_momentum();
@@ -99,6 +110,7 @@ class Simulation {
 
   void prepare();
   void refresh_wave_speeds();
+  double contact_stiffness(std::size_t particle) const;
   double stable_time_step() const;
   // Velocity = momentum / mass with the constraints applied (0 on nodes without mass).
   void nodal_velocity(const double* px, const double* py, double* vx, double* vy);
@@ -114,6 +126,7 @@ class Simulation {
   double particle_half_width_ = 0.5;
   Clock clock_;
   std::array<Reaction, reaction_sets> reaction_{};
+  ContactSummary contact_;
   StepScratch work_;  // owned: a copy of a Simulation has its own
 };
 

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "acst_mpm/footing.hpp"
 #include "acst_mpm/grid.hpp"
 #include "acst_mpm/scatter.hpp"
 
@@ -22,6 +23,8 @@ struct StepScratch {
   std::vector<double> mass_body, fx_body, fy_body;
   // Per-particle scratch: velocities mapped from the grid.
   std::vector<double> pvx, pvy;
+  // Per-particle footing contact of this step (force in N/m and where it acts).
+  std::vector<ContactForce> contact;
   int nx = 0;
 
   // f(node, S, dS/dx, dS/dy) over particle p's 4 x 4 stencil.

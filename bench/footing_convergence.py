@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Cell-size convergence study of the Kimura footings (docs/mpm.md, "Convergence").
+
+Runs each scene with acst_mpm (skipping those whose summary.json already exists, so the study
+can be resumed), then writes OUT/convergence.csv (q_ult, S_ult/B, load at S/B 0.5, wall time per
+run) and one overlay figure per lab test (OUT/<test>_curves.png) with the Kimura data.
+
+  python3 bench/footing_convergence.py [--out DIR] [--threads N] [--only NAME,NAME...]
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+from footing_common import gp_quoted, read_curve, value_at
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
+# (test, lab curve, cell size label, scene file), coarse to fine; 0.09 m is the bundled scene.
+CASES = []
+for test, base in (("V85.6", "kimura_V85.6_alpha0"), ("H86.7", "kimura_H86.7_alpha90")):
+    for label, name in (("0.18", f"convergence/{base}_h018"), ("0.09", base), ("0.09 (2x2 ppc)", f"convergence/{base}_h009ppc2"),
+                        ("0.06", f"convergence/{base}_h006"), ("0.045", f"convergence/{base}_h0045")):
+        CASES.append((test, label, os.path.join(SCENES, name + ".json")))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", "convergence"))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--only", default="", help="comma-separated scene names (file stems) to run; default: all")
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    table = []
+    for test, label, scene in CASES:
+        stem = os.path.splitext(os.path.basename(scene))[0]
+        run_dir = os.path.join(a.out, stem)
+        summary = os.path.join(run_dir, "summary.json")
+        wanted = not a.only or stem in a.only.split(",")
+        failed = os.path.join(run_dir, "load_settlement.failed.csv")
+        if wanted and not os.path.exists(summary):
+            print(f"== {stem} (cell {label})", flush=True)
+            done = subprocess.run([a.tool, "--threads", str(a.threads), "--output", run_dir, scene])
+            if done.returncode not in (0, 1):  # 1: the simulation failed; it leaves its record
+                return done.returncode
+        if os.path.exists(summary):
+            with open(summary) as f:
+                s = json.load(f)
+            S, q = read_curve(os.path.join(run_dir, "load_settlement.csv"))
+            row = {"q_ult_kPa": round(s["q_ult_kPa"], 1), "S_ult_over_B": round(s["S_ult_over_B"], 4),
+                   "peak_reached": s["peak_reached"], "particles": s["particles"], "steps": s["steps"],
+                   "wall_s": round(s["wall_s"], 1), "threads": s["threads"], "failed_at_S_over_B": "",
+                   "csv": os.path.relpath(os.path.join(run_dir, "load_settlement.csv"), a.out)}
+        elif os.path.exists(failed):  # the record up to the failure: the peak if it was passed
+            S, q = read_curve(failed)
+            # the last 0.01 B before a failure are the blow-up, not the soil
+            k = max((i for i in range(len(q)) if S[i] <= S[-1] - 0.01), key=lambda i: q[i])
+            row = {"q_ult_kPa": round(q[k], 1), "S_ult_over_B": round(S[k], 4), "peak_reached": q[-1] < 0.95 * q[k],
+                   "particles": "", "steps": "", "wall_s": "", "threads": a.threads, "failed_at_S_over_B": round(S[-1], 4),
+                   "csv": os.path.relpath(failed, a.out)}
+        else:
+            continue
+        row = {"test": test, "cell": label, "scene": stem, **row, "q_at_SB_0.5_kPa": round(value_at(S, q, 0.5), 1)}
+        table.append(row)
+    with open(os.path.join(a.out, "convergence.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0].keys()) if table else ["test"])
+        w.writeheader()
+        w.writerows(table)
+    for test in ("V85.6", "H86.7"):
+        rows = [r for r in table if r["test"] == test]
+        if not rows:
+            continue
+        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
+        png = os.path.join(a.out, test + "_curves.png")
+        plots = [f"{gp_quoted(os.path.join(a.out, r['csv']))} using 'S_over_B':'q_kPa' with lines lw 2 title "
+                 + gp_quoted(f"MPM, cell {r['cell']} m" + (f" (failed at S/B {r['failed_at_S_over_B']})" if r["failed_at_S_over_B"] != "" else ""))
+                 for r in rows]
+        plots.append(f"{gp_quoted(lab)} using 'S_over_B':'q_kPa' with points pt 7 ps 0.5 lc rgb 'black' title "
+                     + gp_quoted(f"Kimura et al. (1985) {test}"))
+        script = ("set terminal pngcairo size 1000,700 noenhanced\nset datafile separator ','\nset datafile commentschars '#'\n"
+                  f"set output {gp_quoted(png)}\nset key top right\nset xlabel 'S/B'\nset ylabel 'q = V/B [kPa]'\n"
+                  f"set title 'Kimura {test}: contact footing, cell-size convergence'\nset xrange [0:0.5]\nset yrange [0:*]\n"
+                  "plot " + ", ".join(plots) + "\n")
+        subprocess.run(["gnuplot"], input=script, text=True, check=False)
+    print(f"wrote {os.path.join(a.out, 'convergence.csv')}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
