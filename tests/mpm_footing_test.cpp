@@ -1,6 +1,6 @@
 // The contact footing (docs/mpm.md, "The footing") against closed forms: the rigid plate on a
 // confined elastic layer, Prandtl's bearing capacity on weightless Tresca soil (rough and smooth,
-// two cells), a load that rises smoothly through cell crossings, no tension and no load once
+// converging with the cell), a load that rises smoothly through cell crossings, no tension and no load once
 // separated, Coulomb friction capping the horizontal load, and no moment under a centred footing.
 #include <gtest/gtest.h>
 
@@ -64,10 +64,13 @@ std::string tresca(double h, const std::string& interface, double speed, const s
     "stop": {"S_over_B": 0.1}})";
 }
 
-// q = V/B averaged over S/B 0.05-0.1 (past failure) on the Tresca scene.
+// q = V/B averaged over S/B 0.02-0.05 on the Tresca scene: past failure (E = 1000 s_u fails by
+// S/B 0.015), before the footing is embedded deeper than half a cell at h = B/10. At 0.02 m/s the
+// velocity filtering of XPIC adds a viscous resistance of about 1 % of q (it grows with rho v c_p:
+// +5 % at 0.1 m/s; docs/mpm.md, "Verification").
 double prandtl_q(double h, const std::string& interface) {
-  Simulation s = mpm_test::build(tresca(h, interface, 0.1));
-  return mean_q(run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.1; }), 1.0, 0.05, 0.1);
+  Simulation s = mpm_test::build(tresca(h, interface, 0.02));
+  return mean_q(run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.05; }), 1.0, 0.02, 0.05);
 }
 
 }  // namespace
@@ -141,24 +144,27 @@ TEST(FootingContact, NodeRowsJumpAtARowCrossingWhereContactDoesNot) {
   EXPECT_LT(contact, 0.03) << "contact: largest change " << 100 * contact << " %";
 }
 
-TEST(FootingContact, PrandtlBearingCapacityOnTrescaSoilRoughAndSmooth) {
+// The error is the discretisation's, first order in h: the contact force reaches the soil through
+// the nodes around the footing's base, so the soil is loaded as if the base sat a fraction of a
+// cell deeper, and the mechanism also shears the layer above that level beside the footing.
+// Measured (docs/mpm.md, "Verification"): rough +14.6 % at B/10, +8.9 % at B/20, +5.2 % at B/40;
+// the limit extrapolated from B/10 and B/20 as for a first-order error, 2 q(B/20) - q(B/10), is
+// +3.2 %. Stated tolerances: never below Prandtl, at most +18 % at B/10 and +11 % at B/20, the
+// error at B/20 at most 0.7 of that at B/10, the extrapolated limit within 5 %.
+TEST(FootingContact, PrandtlBearingCapacityOnTrescaSoilConvergesFromAbove) {
   const double prandtl = (2 + pi) * 10.0;  // kPa
-  // Stated tolerance at h = B/10: q = V/B within +25 % of Prandtl (measured +17 to +21 %), never
-  // below. An over-prediction that shrinks with the cell (next test): the B-splines carry the
-  // footing's edge into the velocity field over about 1.5 h, so the mechanism starts wider than B.
-  for (const char* interface : {"rough", "smooth"}) {
+  double coarse = 0;  // rough, h = B/10
+  for (const std::string interface : {"rough", "smooth"}) {
     const double q = prandtl_q(0.1, interface);
+    if (interface == "rough") coarse = q;
     EXPECT_GT(q, prandtl) << interface << ": q " << q << " kPa";
-    EXPECT_LT(q, 1.25 * prandtl) << interface << ": q " << q << " kPa, (2 + pi) s_u = " << prandtl;
+    EXPECT_LT(q, 1.18 * prandtl) << interface << ": q " << q << " kPa at h = B/10, (2 + pi) s_u = " << prandtl;
   }
-}
-
-TEST(FootingContact, PrandtlErrorShrinksWithTheCell) {
-  const double prandtl = (2 + pi) * 10.0;
-  const double coarse = prandtl_q(0.1, "rough"), fine = prandtl_q(0.05, "rough");
-  EXPECT_LT(fine - prandtl, 0.75 * (coarse - prandtl)) << "q " << coarse << " at h = B/10, " << fine << " at B/20";
+  const double fine = prandtl_q(0.05, "rough");
   EXPECT_GT(fine, prandtl);
-  EXPECT_LT(fine, 1.16 * prandtl) << "q " << fine << " kPa at h = B/20 (measured +13 %)";
+  EXPECT_LT(fine, 1.11 * prandtl) << "q " << fine << " kPa at h = B/20";
+  EXPECT_LT(fine - prandtl, 0.7 * (coarse - prandtl)) << "q " << coarse << " at h = B/10, " << fine << " at B/20";
+  EXPECT_NEAR(2 * fine - coarse, prandtl, 0.05 * prandtl) << "q " << coarse << " at h = B/10, " << fine << " at B/20";
 }
 
 TEST(FootingContact, NoTensionAndNoLoadOnceSeparated) {

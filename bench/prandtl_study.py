@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Prandtl's bearing capacity with the contact footing (docs/mpm.md, "The footing").
+
+A rigid strip (B = 1 m) on weightless Tresca soil (4 B x 2 B, s_u = 10 kPa, E = 1000 s_u; the
+scene of tests/mpm_footing_test.cpp). q = V/B averaged over S/B 0.02-0.05 against (2 + pi) s_u:
+  - cells B/10, B/20, B/40 at 0.02 m/s (rough; smooth at B/10), with the extrapolated limits;
+  - at B/10, the particle update (FLIP, XPIC every 100/20/5 steps, PIC) at 0.1 m/s and the
+    loading speed (0.1, 0.02, 0.01 m/s) for the default XPIC and for PIC.
+Writes OUT/prandtl.csv and OUT/prandtl.png (q over Prandtl against h/B). B/40 takes minutes.
+
+  python3 bench/prandtl_study.py [--out DIR] [--threads N] [--tool PATH]
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+from footing_common import gp_quoted, read_curve
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PRANDTL = (2 + math.pi) * 10.0  # kPa
+
+# name, cell size (m), interface, speed (m/s), particle update, XPIC every
+CASES = [
+    ("rough_h010", 0.1, "rough", 0.02, "XPIC", 20),
+    ("rough_h005", 0.05, "rough", 0.02, "XPIC", 20),
+    ("rough_h0025", 0.025, "rough", 0.02, "XPIC", 20),
+    ("smooth_h010", 0.1, "smooth", 0.02, "XPIC", 20),
+    ("flip_v010", 0.1, "rough", 0.1, "FLIP", 20),
+    ("xpic100_v010", 0.1, "rough", 0.1, "XPIC", 100),
+    ("xpic20_v010", 0.1, "rough", 0.1, "XPIC", 20),
+    ("xpic5_v010", 0.1, "rough", 0.1, "XPIC", 5),
+    ("pic_v010", 0.1, "rough", 0.1, "PIC", 20),
+    ("xpic20_v001", 0.1, "rough", 0.01, "XPIC", 20),
+    ("pic_v002", 0.1, "rough", 0.02, "PIC", 20),
+    ("pic_v001", 0.1, "rough", 0.01, "PIC", 20),
+]
+
+
+def scene(name, h, interface, speed, update, every):
+    return {"name": name, "grid": {"cell_size": h},
+            "materials": {"clay": {"model": "von_mises",
+                                   "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
+            "bodies": [{"material": "clay", "x_range": [0, 4], "y_range": [0, 2], "density": 1000}],
+            "footing": {"width": 1.0, "centre_x": 2.0, "speed": speed, "interface": interface, "contact": "penalty"},
+            "solver": {"grid_damping": 2, "particle_update": update, "xpic_order": 4, "xpic_every": every},
+            "output": {"vtk_every_S_over_B": 0.05},
+            "stop": {"S_over_B": 0.05}}
+
+
+def mean_q(S, q, lo, hi):
+    v = [b for a, b in zip(S, q) if lo <= a <= hi]
+    return sum(v) / len(v) if v else float("nan")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", "prandtl"))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    rows = []
+    for name, h, interface, speed, update, every in CASES:
+        run_dir = os.path.join(a.out, name)
+        record = os.path.join(run_dir, "load_settlement.csv")
+        if not os.path.exists(record):
+            path = os.path.join(a.out, name + ".json")
+            with open(path, "w") as f:
+                json.dump(scene(name, h, interface, speed, update, every), f, indent=1)
+            print(f"== {name}", flush=True)
+            done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
+            if done.returncode != 0:
+                print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
+                continue
+        S, q = read_curve(record)
+        qm = mean_q(S, q, 0.02, 0.05)
+        rows.append({"case": name, "h_over_B": h, "interface": interface, "speed_m_per_s": speed,
+                     "particle_update": update, "xpic_every": every if update == "XPIC" else "",
+                     "q_kPa": round(qm, 2), "q_over_prandtl": round(qm / PRANDTL, 4)})
+        print(f"{name:14s} h/B {h:<6} {interface:6s} {speed:5} m/s {update:4s}/{every:<3}  q {qm:6.2f} kPa  "
+              f"q/(2+pi)s_u {qm / PRANDTL:.3f}")
+    with open(os.path.join(a.out, "prandtl.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    ladder = {r["h_over_B"]: r["q_over_prandtl"] for r in rows if r["case"].startswith("rough_h")}
+    hs = sorted(ladder, reverse=True)
+    for h0, h1 in zip(hs, hs[1:]):
+        print(f"first-order extrapolation from B/{1 / h0:.0f} and B/{1 / h1:.0f}: {2 * ladder[h1] - ladder[h0]:.3f}")
+    data = os.path.join(a.out, "prandtl_ladder.dat")
+    with open(data, "w") as f:
+        for h in hs:
+            f.write(f"{h} {ladder[h]}\n")
+    script = "\n".join([
+        "set terminal pngcairo size 800,560",
+        f"set output {gp_quoted(os.path.join(a.out, 'prandtl.png'))}",
+        "set xlabel 'cell size h / B'", "set ylabel 'q / (2 + pi) s_u  (S/B 0.02-0.05)'",
+        "set xrange [0:0.11]", "set yrange [0.9:1.25]", "set key top left", "set grid",
+        f"plot {gp_quoted(data)} using 1:2 with linespoints pt 7 title 'contact footing, rough, 0.02 m/s', "
+        "1 with lines dt 2 lc rgb 'black' title 'Prandtl (2 + pi) s_u'", ""])
+    subprocess.run(["gnuplot"], input=script, text=True, check=True)
+    print(f"results: {a.out}/prandtl.csv, prandtl.png")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
