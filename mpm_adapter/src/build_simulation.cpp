@@ -29,9 +29,19 @@ double column_top(const Scene& s, double x) {
   return top;
 }
 
+// The scene's soil right of the footing's centre line (the reader checked the scene is its own
+// mirror image about that line, and the line lies on the grid).
+Scene right_half(const Scene& s) {
+  Scene half = s;
+  for (BodySpec& b : half.bodies) b.x_min = s.footing->centre_x;
+  return half;
+}
+
 }  // namespace
 
-Simulation build_simulation(const Scene& s) {
+Simulation build_simulation(const Scene& scene) {
+  const bool half = scene.footing && scene.footing->symmetric_half;
+  const Scene s = half ? right_half(scene) : scene;
   const double h = s.cell_size;
   double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY, y_max = -INFINITY;
   for (const BodySpec& b : s.bodies) {
@@ -50,8 +60,10 @@ Simulation build_simulation(const Scene& s) {
   Walls& walls = boundaries.walls;
   walls.left = x_min, walls.right = x_max, walls.base = y_min;
   walls.base_fixed = s.base_fixed;
-  walls.sides = s.sides;
+  walls.left_side = half ? SideWall::smooth : s.sides;  // the centre line is a symmetry plane
+  walls.right_side = s.sides;
   boundaries.surcharge = s.surcharge;
+  boundaries.symmetric_half = half;
 
   std::vector<std::shared_ptr<const Material>> materials;
   std::map<std::string, int> index;
@@ -81,6 +93,7 @@ Simulation build_simulation(const Scene& s) {
     f.friction = s.footing->friction_coefficient;
     f.penalty_factor = s.footing->penalty_factor;
     f.unload_at = s.footing->unload_at_S_over_B * s.footing->width;
+    f.ramp_time = 2.0 * s.footing->ramp_S_over_B * s.footing->width / s.footing->speed;  // S(t_r) = v t_r / 2
     if (!std::isfinite(f.base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
     boundaries.footing = Footing(f);
   }

@@ -6,13 +6,20 @@
 namespace acst::mpm {
 
 double Footing::vx() const {
-  const double v = spec_.speed * std::sin(spec_.inclination);
+  const double v = ramp_ * spec_.speed * std::sin(spec_.inclination);
   return motion_.unloading ? -v : v;
 }
 
 double Footing::vy() const {
-  const double v = -spec_.speed * std::cos(spec_.inclination);
+  const double v = -ramp_ * spec_.speed * std::cos(spec_.inclination);
   return motion_.unloading ? -v : v;
+}
+
+// Half a cosine: the speed and the acceleration start and end without a jump, so the ramp sends
+// no wave into the soil at either end; it covers S = speed t_r / 2.
+void Footing::at_time(double t) {
+  constexpr double pi = 3.14159265358979323846;
+  ramp_ = spec_.ramp_time > 0.0 && t < spec_.ramp_time ? 0.5 * (1.0 - std::cos(pi * t / spec_.ramp_time)) : 1.0;
 }
 
 void Footing::constrain(const Grid& grid, NodeConstraints& c) const {

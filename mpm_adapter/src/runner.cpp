@@ -130,6 +130,8 @@ class Run {
     const double n = static_cast<double>(st_.period_steps);
     const LoadRecord r = current(st_.sum_V / n, st_.sum_H / n, st_.sum_M / n, st_.max_penetration);
     st_.history.push_back(r);
+    if (scene_.quasi_static.stop_on_excess && kinetic_ratio(r) > scene_.quasi_static.kinetic_ratio_limit)
+      throw SimulationError(quasi_static_message(r) + " (quasi_static/on_excess 'stop')");
     st_.sum_V = st_.sum_H = st_.sum_M = st_.max_penetration = 0.0;
     st_.period_steps = 0;
     if (scene_.footing && r.V_kN_per_m > st_.peak.V_kN_per_m) {
@@ -202,6 +204,31 @@ class Run {
     common::write_file_atomically(path("load_settlement.partial.csv"), load_csv_text(scene_, rows()));
   }
 
+  // Kinetic energy over the footing's work for a record past the check's start (0 before it).
+  double kinetic_ratio(const LoadRecord& r) const {
+    if (!scene_.footing || r.S_over_B < scene_.quasi_static.check_from_S_over_B || r.footing_work_J_per_m <= 0.0)
+      return 0.0;
+    return r.kinetic_J_per_m / r.footing_work_J_per_m;
+  }
+
+  std::string quasi_static_message(const LoadRecord& r) const {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "not quasi-static: the kinetic energy is %.3g of the footing's work at S/B %.4f, above "
+                  "quasi_static/kinetic_ratio_limit %.3g; slow the footing or lower solver/mass_scaling",
+                  kinetic_ratio(r), r.S_over_B, scene_.quasi_static.kinetic_ratio_limit);
+    return text;
+  }
+
+  // The record with the largest kinetic ratio past the check's start (history is checkpointed,
+  // so a resumed run judges its whole record).
+  const LoadRecord* most_dynamic() const {
+    const LoadRecord* worst = nullptr;
+    for (const LoadRecord& r : st_.history)
+      if (kinetic_ratio(r) > 0.0 && (!worst || kinetic_ratio(r) > kinetic_ratio(*worst))) worst = &r;
+    return worst;
+  }
+
   void write_results(RunSummary& sum) {
     common::write_file_atomically(path("load_settlement.csv"), load_csv_text(scene_, rows()));
     std::remove(path("load_settlement.partial.csv").c_str());
@@ -210,6 +237,9 @@ class Run {
     sum.S_ult_over_B = st_.peak.S_over_B;
     sum.S_ult = st_.peak.S_over_B * B_;
     sum.peak_reached = scene_.footing && sum.residual_V < 0.98 * sum.Q_ult;
+    const LoadRecord* worst = most_dynamic();
+    const double max_ratio = worst ? kinetic_ratio(*worst) : 0.0;
+    if (max_ratio > scene_.quasi_static.kinetic_ratio_limit) sum.warnings.push_back(quasi_static_message(*worst));
     if (opt_.plot && scene_.footing) {
       const std::string w = write_load_figure(scene_, opt_.output_dir, "load_settlement.csv");
       if (!w.empty()) sum.warnings.push_back(w);
@@ -232,6 +262,10 @@ class Run {
                                             {"residual_V_kN_per_m", sum.residual_V},
                                             {"final_S_over_B", S_over_B()},
                                             {"footing_contact", footing_contact_name()},
+                                            {"symmetric_half", scene_.footing && scene_.footing->symmetric_half},
+                                            {"max_kinetic_ratio", max_ratio},
+                                            {"kinetic_ratio_limit", scene_.quasi_static.kinetic_ratio_limit},
+                                            {"quasi_static", max_ratio <= scene_.quasi_static.kinetic_ratio_limit},
                                             {"max_penetration_m", max_penetration()}};
     common::write_file_atomically(path("summary.json"), summary.dump(2) + "\n");
   }

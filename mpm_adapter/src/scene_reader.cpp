@@ -1,4 +1,5 @@
 // Reads and validates an MPM scene; every error names the JSON path and the allowed values.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -101,7 +102,7 @@ Settings read_solver(const json& j, const std::string& p) {
 
 FootingSpec read_footing(const json& j, const std::string& p) {
   f::allow_keys(j, {"width", "centre_x", "speed", "inclination_deg", "interface", "friction_coefficient", "contact",
-                    "penalty_factor", "unload_at_S_over_B"},
+                    "penalty_factor", "unload_at_S_over_B", "symmetric_half", "ramp_S_over_B"},
                 p);
   FootingSpec fs;
   for (const char* k : {"width", "centre_x", "speed"})
@@ -138,7 +139,28 @@ FootingSpec read_footing(const json& j, const std::string& p) {
   }
   if (j.contains("unload_at_S_over_B"))
     fs.unload_at_S_over_B = f::number(j["unload_at_S_over_B"], p + "/unload_at_S_over_B", {0.0, 10.0, true, false});
+  if (j.contains("ramp_S_over_B")) fs.ramp_S_over_B = f::number(j["ramp_S_over_B"], p + "/ramp_S_over_B", {0.0, 1.0});
+  if (j.contains("symmetric_half")) fs.symmetric_half = f::boolean(j["symmetric_half"], p + "/symmetric_half");
+  if (fs.symmetric_half && fs.contact != FootingContact::penalty)
+    f::fail(p + "/symmetric_half", "needs contact 'penalty' (the loads are the contact forces doubled)");
+  if (fs.symmetric_half && fs.inclination_deg != 0.0)
+    f::fail(p + "/symmetric_half", "needs a vertical load (inclination_deg 0): an inclined load is not symmetric");
   return fs;
+}
+
+QuasiStaticSpec read_quasi_static(const json& j, const std::string& p) {
+  f::allow_keys(j, {"kinetic_ratio_limit", "check_from_S_over_B", "on_excess"}, p);
+  QuasiStaticSpec q;
+  if (j.contains("kinetic_ratio_limit"))
+    q.kinetic_ratio_limit = f::number(j["kinetic_ratio_limit"], p + "/kinetic_ratio_limit", {0.0, 1.0, true, true});
+  if (j.contains("check_from_S_over_B"))
+    q.check_from_S_over_B = f::number(j["check_from_S_over_B"], p + "/check_from_S_over_B", {0.0, 5.0});
+  if (j.contains("on_excess")) {
+    const std::string a = f::string(j["on_excess"], p + "/on_excess");
+    if (a != "warn" && a != "stop") f::fail(p + "/on_excess", "'" + a + "' is not one of warn, stop");
+    q.stop_on_excess = a == "stop";
+  }
+  return q;
 }
 
 OutputSpec read_output(const json& j, const std::string& p, const std::string& dir) {
@@ -168,12 +190,33 @@ OutputSpec read_output(const json& j, const std::string& p, const std::string& d
   return o;
 }
 
+// A half-domain run stands for the whole only if the scene is its own mirror image about the
+// footing's centre line: bodies spanning symmetric ranges, fabric symmetric (bedding planes
+// horizontal or vertical), walls alike on both sides (they are: one /walls/sides).
+void check_symmetric(const Scene& s) {
+  const std::string p = "/footing/symmetric_half";
+  const double c = s.footing->centre_x, h = s.cell_size;
+  if (std::fabs(c / h - std::round(c / h)) > 1e-6)
+    f::fail(p, "the symmetry plane (/footing/centre_x = " + f::shown(c) + " m) must lie on a grid line");
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const BodySpec& b = s.bodies[i];
+    const std::string where = "/bodies/" + std::to_string(i);
+    if (std::fabs((b.x_min + b.x_max) - 2.0 * c) > 1e-6 * h)
+      f::fail(p, "body " + where + " spans x " + f::shown(b.x_min) + " to " + f::shown(b.x_max) +
+                     " m, not symmetric about /footing/centre_x = " + f::shown(c) + " m");
+    const double a = std::fmod(std::fabs(b.bedding_angle_deg), 90.0);
+    if (a > 1e-9 && a < 90.0 - 1e-9)
+      f::fail(p, "body " + where + " has bedding_angle_deg " + f::shown(b.bedding_angle_deg) +
+                     ": only bedding planes at 0 or 90 deg are their own mirror image");
+  }
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& json_text, const std::string& file) {
   const json j = f::parse(json_text, "", "the scene");
   f::allow_keys(j, {"name", "description", "grid", "materials", "bodies", "initial_stress", "gravity", "walls",
-                    "surcharge_kPa", "footing", "solver", "stop", "output"},
+                    "surcharge_kPa", "footing", "quasi_static", "solver", "stop", "output"},
                 "");
   const std::string dir = file.empty() ? "" : std::filesystem::path(file).parent_path().string();
   Scene s;
@@ -222,6 +265,10 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   }
   if (j.contains("surcharge_kPa")) s.surcharge = f::number(j["surcharge_kPa"], "/surcharge_kPa", {0.0, 1e5}, "kPa");
   if (j.contains("footing")) s.footing = read_footing(j["footing"], "/footing");
+  if (j.contains("quasi_static")) {
+    if (!s.footing) f::fail("/quasi_static", "needs a /footing (the check compares kinetic energy with its work)");
+    s.quasi_static = read_quasi_static(j["quasi_static"], "/quasi_static");
+  }
   if (j.contains("solver")) s.solver = read_solver(j["solver"], "/solver");
   s.solver.gravity = s.gravity;
 
@@ -246,6 +293,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
         f::fail(p, "the body's edges must lie on grid lines (multiples of /grid/cell_size = " + f::shown(s.cell_size) + " m)");
     }
   }
+  if (s.footing && s.footing->symmetric_half) check_symmetric(s);
   return s;
 }
 

@@ -126,7 +126,7 @@ double Simulation::kinetic_energy() const {
   double k = 0.0;
   for (std::size_t p = 0; p < particles_.n; ++p)
     k += 0.5 * particles_.mass[p] * (particles_.vx[p] * particles_.vx[p] + particles_.vy[p] * particles_.vy[p]);
-  return k;
+  return boundaries_.symmetric_half ? 2.0 * k : k;
 }
 
 void Simulation::fail(std::size_t p, const std::string& what, const std::string& reproducer) const {
@@ -254,6 +254,7 @@ void Simulation::xpic_velocity(int order) {
 
 // One step of update-stress-average (docs/mpm.md, "One step"): the phases in their order.
 void Simulation::step() {
+  boundaries_.footing.at_time(clock_.time);
   refresh_time_step();
   compute_shape_functions();
   map_mass_and_momentum();
@@ -324,6 +325,11 @@ void Simulation::footing_contact() {
     c.moment += (t.at_x - xc) * t.fy - (t.at_y - yc) * t.fx;
     c.max_penetration = std::max(c.max_penetration, t.penetration);
     ++c.touching;
+  }
+  if (boundaries_.symmetric_half) {  // the mirror half pushes alike: V doubles, H and M cancel
+    sum.fy *= 2.0;
+    sum.fx = 0.0;
+    c.moment = 0.0;
   }
   reaction_[reaction_footing] = sum;
   contact_ = c;

@@ -21,13 +21,18 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
     node(0) *= 1.0 + s;
     for (int k = 1; k <= reach; ++k) node(-k) = s * node(k);
   };
-  if (sides != SideWall::none) {
-    const double s = c == FieldKind::scalar ? 1.0 : (c == FieldKind::x || sides == SideWall::fixed ? -1.0 : 1.0);
-    const int il = wall_node(left, grid.x0, grid.h), ir = wall_node(right, grid.x0, grid.h);
-    for (int j = 0; j < ny; ++j) {
-      fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
-      fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
-    }
+  const auto sign = [c](SideWall side) {
+    return c == FieldKind::scalar ? 1.0 : (c == FieldKind::x || side == SideWall::fixed ? -1.0 : 1.0);
+  };
+  if (left_side != SideWall::none) {
+    const double s = sign(left_side);
+    const int il = wall_node(left, grid.x0, grid.h);
+    for (int j = 0; j < ny; ++j) fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
+  }
+  if (right_side != SideWall::none) {
+    const double s = sign(right_side);
+    const int ir = wall_node(right, grid.x0, grid.h);
+    for (int j = 0; j < ny; ++j) fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
   }
   if (base_fixed) {
     const double s = c == FieldKind::scalar ? 1.0 : -1.0;  // no slip: both components odd
@@ -38,8 +43,8 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
 
 int Walls::wall_of(int i, int j, const Grid& grid) const {
   if (base_fixed && j <= wall_node(base, grid.y0, grid.h) + 2) return reaction_base;
-  if (sides != SideWall::none && i <= wall_node(left, grid.x0, grid.h) + 2) return reaction_left;
-  if (sides != SideWall::none && i >= wall_node(right, grid.x0, grid.h) - 2) return reaction_right;
+  if (left_side != SideWall::none && i <= wall_node(left, grid.x0, grid.h) + 2) return reaction_left;
+  if (right_side != SideWall::none && i >= wall_node(right, grid.x0, grid.h) - 2) return reaction_right;
   return free_node;
 }
 

@@ -20,4 +20,14 @@ inline acst::mpm::Simulation build(const std::string& json) {
   return acst::mpm::build_simulation(acst::mpm::parse_scene(json));
 }
 
+// The reader's message for a bad scene, or "accepted".
+inline std::string parse_error(const std::string& json) {
+  try {
+    acst::mpm::parse_scene(json);
+  } catch (const acst::common::InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
 }  // namespace mpm_test

@@ -14,7 +14,7 @@
 //   separated. The load is a sum over particles, continuous in the footing's position.
 // - node rows (the old formulation, kept to show its artefact): grid nodes inside the footprint
 //   and at or above the base (nearest node row) move with the footing.
-#include <cstddef>
+#include <algorithm>
 
 #include "acst_mpm/grid.hpp"
 
@@ -48,6 +48,7 @@ class Footing {
     FootingInterface interface = FootingInterface::rough;
     double friction = 0.0;        // Coulomb coefficient (interface coulomb)
     double penalty_factor = 4.0;  // k_n = factor * M / h
+    double ramp_time = 0.0;       // s over which the speed rises from zero (0: none)
   };
   // How far it has moved and the work it has done on the soil (checkpointed).
   struct Motion {
@@ -76,6 +77,8 @@ class Footing {
 
   // Moves on by its velocity over dt; `on_soil` is the force it exerts on the soil (N/m).
   void advance(const Reaction& on_soil, double dt);
+  // The clock's time at the start of a step: sets the speed on the ramp.
+  void at_time(double t);
   double vx() const;
   double vy() const;
 
@@ -83,6 +86,7 @@ class Footing {
   Spec spec_;
   Motion motion_;
   bool active_ = false;
+  double ramp_ = 1.0;  // fraction of the speed reached on the ramp
 };
 
 }  // namespace acst::mpm

@@ -34,6 +34,16 @@ struct FootingSpec {
   double friction_coefficient = 0;  // interface "coulomb"
   double penalty_factor = 4;        // contact "penalty": k_n = factor * M / h
   double unload_at_S_over_B = 0;    // reverse the footing there (0: never)
+  bool symmetric_half = false;      // model x >= centre_x only, its mirror image standing for the rest
+  double ramp_S_over_B = 0;         // the speed rises from zero (half a cosine) while the footing settles this
+};
+
+// The check that a footing run stays quasi-static: the kinetic energy over the footing's work,
+// past check_from_S_over_B, against the limit; over it the run warns, or stops if asked.
+struct QuasiStaticSpec {
+  double kinetic_ratio_limit = 0.01;
+  double check_from_S_over_B = 0.02;
+  bool stop_on_excess = false;
 };
 
 struct StopSpec {
@@ -64,6 +74,7 @@ struct Scene {
   SideWall sides = SideWall::smooth;   // walls/sides: "smooth", "fixed" or "none"
   double surcharge = 0;          // kPa on the top surface outside the footing
   std::optional<FootingSpec> footing;
+  QuasiStaticSpec quasi_static;
   Settings solver;
   StopSpec stop;
   OutputSpec output;

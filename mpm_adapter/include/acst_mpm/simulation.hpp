@@ -47,6 +47,9 @@ struct Boundaries {
   Walls walls;
   Footing footing;         // inactive unless the scene has one
   double surcharge = 0.0;  // kPa on the particles with a surcharge_length
+  // Half domain: the left wall is the footing's centre line and the soil beyond it this soil's
+  // mirror image, so the footing's V and the kinetic energy are reported doubled, H and M zero.
+  bool symmetric_half = false;
 };
 
 // The footing contact over the last step: moment about the base centre of the footing's force

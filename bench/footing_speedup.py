@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""Speed against accuracy for the Kimura V85.6 footing (docs/mpm.md, "Quasi-static loading").
+
+Runs the bundled scene with the options that trade accuracy for speed, alone and combined:
+  - the symmetric half domain (footing/symmetric_half);
+  - a faster footing (footing/speed x f) and mass scaling (solver/mass_scaling f), f = 2 ... 32;
+and compares each with the reference settings (full domain, 0.045 m/s, no mass scaling, same
+cell size, same build): change of q_ult, RMS difference of the curves over S/B 0-0.3 (sampled
+every 0.005 B) over the reference q_ult, the largest kinetic-to-work ratio past S/B 0.02, wall
+time. Writes OUT/speedup.csv and OUT/speedup.png (wall time against both errors); runs whose
+summary.json exists are reused, so the study resumes.
+
+  python3 bench/footing_speedup.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+from footing_common import gp_quoted, read_curve, value_at
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BASE = os.path.join(ROOT, "data", "scenes", "mpm", "kimura_V85.6_alpha0.json")
+FACTORS = (2, 4, 8, 16, 32)
+
+
+def cases():
+    """(name, symmetric half, speed factor, mass scaling); the reference first."""
+    out = [("reference", False, 1, 1), ("half", True, 1, 1)]
+    out += [(f"speed{f}", False, f, 1) for f in FACTORS]
+    out += [(f"mass{f}", False, 1, f) for f in FACTORS]
+    out += [(f"half_speed{f}", True, f, 1) for f in (4, 8, 16)]
+    out += [(f"half_speed{f}_mass{m}", True, f, m) for f, m in ((4, 4), (8, 4))]
+    return out
+
+
+def scene_for(name, half, speed, mass):
+    with open(BASE) as f:
+        s = json.load(f)
+    here = os.path.dirname(BASE)
+    s["name"] = name
+    s["materials"] = {k: os.path.normpath(os.path.join(here, v)) for k, v in s["materials"].items()}
+    s["output"]["lab_curve"] = os.path.normpath(os.path.join(here, s["output"]["lab_curve"]))
+    s["output"]["checkpoint_every_s"] = 0
+    s["output"]["contours_at_S_over_B"] = []
+    s["output"]["contours_at_peak"] = False
+    s["output"]["vtk_every_S_over_B"] = 1.0
+    s["footing"]["speed"] *= speed
+    s["footing"]["symmetric_half"] = half
+    s["solver"]["mass_scaling"] = mass
+    return s
+
+
+def max_kinetic_ratio(path, from_S_over_B=0.02):
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    return max(float(r["kinetic_over_work"]) for r in rows if float(r["S_over_B"]) >= from_S_over_B)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", "footing_speedup"))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--only", default="", help="comma-separated case names to run; default: all")
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    table = []
+    for name, half, speed, mass in cases():
+        run_dir = os.path.join(a.out, name)
+        summary = os.path.join(run_dir, "summary.json")
+        if (not a.only or name in a.only.split(",")) and not os.path.exists(summary):
+            path = os.path.join(a.out, name + ".json")
+            with open(path, "w") as f:
+                json.dump(scene_for(name, half, speed, mass), f, indent=2)
+            print(f"== {name}", flush=True)
+            done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
+            if done.returncode != 0:
+                print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
+        if not os.path.exists(summary):
+            continue
+        with open(summary) as f:
+            s = json.load(f)
+        record = os.path.join(run_dir, "load_settlement.csv")
+        S, q = read_curve(record)
+        table.append({"case": name, "symmetric_half": half, "speed_factor": speed, "mass_scaling": mass,
+                      "q_ult_kPa": s["q_ult_kPa"], "S_ult_over_B": s["S_ult_over_B"], "steps": s["steps"],
+                      "particles": s["particles"], "wall_s": s["wall_s"], "threads": s["threads"],
+                      "max_kinetic_ratio": max_kinetic_ratio(record), "curve": (S, q)})
+    ref = next((r for r in table if r["case"] == "reference"), None)
+    if ref is None:
+        print("no reference run: nothing to compare", file=sys.stderr)
+        return 1
+    grid = [0.005 * k for k in range(1, 61)]  # S/B 0.005 ... 0.3
+    q_ref = [value_at(*ref["curve"], x) for x in grid]
+    for r in table:
+        q = [value_at(*r["curve"], x) for x in grid]
+        sq = [(a_ - b) ** 2 for a_, b in zip(q, q_ref) if not (math.isnan(a_) or math.isnan(b))]
+        r["q_ult_change_pct"] = 100.0 * (r["q_ult_kPa"] / ref["q_ult_kPa"] - 1.0)
+        r["curve_rms_pct"] = 100.0 * math.sqrt(sum(sq) / len(sq)) / ref["q_ult_kPa"]
+        r["speedup"] = ref["wall_s"] / r["wall_s"]
+        print(f"{r['case']:22s} q_ult {r['q_ult_kPa']:7.1f} kPa ({r['q_ult_change_pct']:+6.2f} %)  S_ult/B {r['S_ult_over_B']:.3f}  "
+              f"RMS {r['curve_rms_pct']:5.2f} %  K/W {r['max_kinetic_ratio']:.1e}  steps {r['steps']:6d}  "
+              f"wall {r['wall_s']:6.1f} s (x{r['speedup']:.1f})")
+    fields = ["case", "symmetric_half", "speed_factor", "mass_scaling", "q_ult_kPa", "q_ult_change_pct", "S_ult_over_B",
+              "curve_rms_pct", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads", "speedup"]
+    with open(os.path.join(a.out, "speedup.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        w.writeheader()
+        for r in table:
+            w.writerow({k: (round(v, 4) if isinstance(v, float) else v) for k, v in r.items() if k in fields})
+    data = os.path.join(a.out, "speedup.dat")
+    with open(data, "w") as f:
+        for r in table:
+            if r["case"] != "reference":
+                f.write(f"{r['wall_s']} {max(abs(r['q_ult_change_pct']), 0.01)} {max(r['curve_rms_pct'], 0.01)} {r['case']}\n")
+    script = "\n".join([
+        "set terminal pngcairo size 1000,700 noenhanced",
+        f"set output {gp_quoted(os.path.join(a.out, 'speedup.png'))}",
+        "set logscale xy", "set grid", "set key top right",
+        "set xlabel 'wall time [s], 2 threads'", "set ylabel 'error against the reference settings [%]'",
+        f"set title {gp_quoted('Kimura V85.6, cell 0.09 m: speed against accuracy (reference: %.0f s)' % ref['wall_s'])}",
+        "set arrow from graph 0,first 2 to graph 1,first 2 nohead dt 2 lc rgb 'gray'",
+        "set arrow from 60,graph 0 to 60,graph 1 nohead dt 2 lc rgb 'gray'",
+        f"plot {gp_quoted(data)} using 1:2 with points pt 7 ps 1.2 title 'q_ult change', "
+        f"{gp_quoted(data)} using 1:3 with points pt 5 ps 1.0 title 'RMS curve difference, S/B 0-0.3', "
+        f"{gp_quoted(data)} using 1:3:4 with labels offset 0.8,0.6 left font ',8' notitle", ""])
+    subprocess.run(["gnuplot"], input=script, text=True, check=False)
+    print(f"wrote {os.path.join(a.out, 'speedup.csv')} and speedup.png")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
