@@ -55,7 +55,7 @@ TEST(CommonFiles, AtomicWriteReplacesWholeOrLeavesTheOldFile) {
   const std::string file = (dir / "result.csv").string();
   acst::common::write_file_atomically(file, "old\n");
   acst::common::write_file_atomically(file, "new\n");
-  EXPECT_EQ(acst::common::read_file(file).value_or(""), "new\n");
+  EXPECT_EQ(acst::common::read_input_file(file), "new\n");
   // A target that cannot be replaced (a non-empty folder of that name): the write fails, no
   // temporary file is left behind and the folder is untouched.
   fs::create_directories(dir / "taken" / "inside");
@@ -64,7 +64,7 @@ TEST(CommonFiles, AtomicWriteReplacesWholeOrLeavesTheOldFile) {
   int entries = 0;
   for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename().string()[0] == '.';
   EXPECT_EQ(entries, 0) << "a temporary file was left";
-  EXPECT_FALSE(acst::common::read_file((dir / "none").string()).has_value());
+  EXPECT_THROW(acst::common::read_input_file((dir / "none").string()), InputError);
   fs::remove_all(dir);
 }
 

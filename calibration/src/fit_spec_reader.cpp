@@ -12,6 +12,7 @@
 #include "acst_calibration/fit_spec.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/plain_stem.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/material_object.hpp"
 
@@ -91,10 +92,16 @@ std::pair<double, double> strain_range(const driver::LabCurve& lab, const std::s
   return {lo, hi};
 }
 
-double header_number(const driver::LabCurve& lab, const char* key, const std::string& path, const char* spec_key) {
+// A condition from the lab file's header, held to the range the same key has in the description
+// (a header of 1e999 reads as infinity).
+double header_number(const driver::LabCurve& lab, const char* key, const std::string& path, const char* spec_key,
+                     const f::Range& allowed) {
   const double v = lab.number(key);
   if (std::isnan(v))
     f::fail(path, std::string("the lab file '") + lab.path + "' has no numeric '" + key + "' header; give " + spec_key);
+  if (!allowed.contains(v))
+    f::fail(path, std::string("the lab file '") + lab.path + "' has '" + key + ": " + lab.text(key) +
+                      "', out of range; allowed: " + allowed.text() + "; give " + spec_key);
   return v;
 }
 
@@ -119,7 +126,10 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
   } catch (const std::exception& err) {
     f::fail(key_path("data"), err.what());
   }
-  x.id = e.contains("id") ? f::string(e["id"], key_path("id")) : std::filesystem::path(name).stem().string();
+  // The id names the experiment's curve files and reaches their gnuplot scripts.
+  x.id = e.contains("id") ? common::require_plain_stem(f::string(e["id"], key_path("id")), key_path("id"))
+                          : common::require_plain_stem(std::filesystem::path(name).stem().string(),
+                                                       path + "/id (not given; the data file's name would be used)");
 
   if (e.contains("test")) {
     x.test = f::string(e["test"], key_path("test"));
@@ -134,13 +144,14 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
   if (!curve && !table)
     f::fail(key_path("test"), "unknown test type '" + x.test + "' (allowed: " + list(std::begin(curve_tests), std::end(curve_tests)) +
                                   ", " + list(std::begin(table_tests), std::end(table_tests)) + ")");
-  if (e.contains("group")) x.group = f::string(e["group"], key_path("group"));
-  if (x.group.empty()) f::fail(key_path("group"), "must not be empty");
+  // A group names a parameter file of its own (NAME_parameters_GROUP.json).
+  if (e.contains("group")) x.group = common::require_plain_stem(f::string(e["group"], key_path("group")), key_path("group"));
 
-  x.sigma3_kPa = e.contains("sigma3_kPa") ? f::number(e["sigma3_kPa"], key_path("sigma3_kPa"), f::positive(), "kPa")
-                                          : header_number(lab, "sigma3_kPa", path, "sigma3_kPa");
-  x.void_ratio = e.contains("void_ratio") ? f::number(e["void_ratio"], key_path("void_ratio"), {0.0, 2.97, true, true})
-                                          : header_number(lab, "e0", path, "void_ratio");
+  const f::Range sigma3_range = f::positive(), void_ratio_range{0.0, 2.97, true, true}, angle_range{0.0, 180.0};
+  x.sigma3_kPa = e.contains("sigma3_kPa") ? f::number(e["sigma3_kPa"], key_path("sigma3_kPa"), sigma3_range, "kPa")
+                                          : header_number(lab, "sigma3_kPa", path, "sigma3_kPa", sigma3_range);
+  x.void_ratio = e.contains("void_ratio") ? f::number(e["void_ratio"], key_path("void_ratio"), void_ratio_range)
+                                          : header_number(lab, "e0", path, "void_ratio", void_ratio_range);
   if (e.contains("void_ratio_at_kPa"))
     x.void_ratio_at_kPa = f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), {0.0, x.sigma3_kPa, true, false}, "kPa (at most sigma3_kPa)");
   if (e.contains("b")) {
@@ -153,8 +164,8 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
 
   if (curve) {
     x.bedding_angle_deg = e.contains("bedding_angle_deg")
-        ? f::number(e["bedding_angle_deg"], key_path("bedding_angle_deg"), {0.0, 180.0}, "deg")
-        : header_number(lab, "bedding_angle_deg", path, "bedding_angle_deg");
+        ? f::number(e["bedding_angle_deg"], key_path("bedding_angle_deg"), angle_range, "deg")
+        : header_number(lab, "bedding_angle_deg", path, "bedding_angle_deg", angle_range);
     try {
       lab = driver::read_lab_curve(x.data_file);
     } catch (const std::exception& err) {
@@ -256,7 +267,9 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
     if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
   FitSpec s;
   s.base_dir = base_dir;
-  s.name = j.contains("name") ? f::string(j["name"], "/name") : default_name;
+  // The name starts every output file's name and reaches the overview's gnuplot script.
+  s.name = j.contains("name") ? common::require_plain_stem(f::string(j["name"], "/name"), "/name")
+                              : common::require_plain_stem(default_name, "/name (not given; the description file's name would be used)");
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
 
   s.material = driver::read_material_object(j["material"], "/material", base_dir).object;
@@ -321,10 +334,14 @@ FitSpec parse_fit_spec(const std::string& text, const std::string& base_dir, con
 }
 
 FitSpec read_fit_spec(const std::string& path) {
-  const std::optional<std::string> text = common::read_file(path);
-  if (!text) throw common::InputError("cannot read the fit description '" + path + "'");
+  std::string text;
+  try {
+    text = common::read_input_file(path);
+  } catch (const common::InputError& e) {
+    throw common::InputError(std::string("cannot read the fit description: ") + e.what());
+  }
   const std::filesystem::path p(path);
-  FitSpec s = parse_fit_spec(*text, p.parent_path().string(), p.stem().string());
+  FitSpec s = parse_fit_spec(text, p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

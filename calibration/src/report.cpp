@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "acst_common/files.hpp"
+#include "acst_common/gnuplot.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
 
@@ -44,19 +46,19 @@ std::string axis_title(const ExperimentSpec& x, const std::string& axis) {
 // the script.
 std::string panel(const Problem& problem, std::size_t k, const Series& s, std::size_t index, const std::string& dir) {
   const ExperimentSpec& x = problem.spec().experiments[k];
-  const std::string points = "'" + dir + x.id + "_points.csv'";
+  const std::string points = common::gp_quoted(dir + x.id + "_points.csv");
   std::ostringstream g;
-  g << "set title '" << x.id << " (" << x.test << ", " << s.axis << ")' noenhanced\n";
+  g << "set title " << common::gp_quoted(x.id + " (" + x.test + ", " + s.axis + ")") << " noenhanced\n";
   if (s.axis == "phi") {
-    g << "set xlabel 'bedding angle [deg]'\nset ylabel '" << axis_title(x, s.axis) << "'\nset xrange [-10:100]\n"
+    g << "set xlabel 'bedding angle [deg]'\nset ylabel " << common::gp_quoted(axis_title(x, s.axis)) << "\nset xrange [-10:100]\n"
       << "plot " << points << " using 2:4:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 7 ps 1.3 lc variable title 'lab (TC, PSC, TE)', \\\n"
       << "     " << points << " using 2:5:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 6 ps 2 lw 2 lc variable title 'fit'\n"
       << "set xrange [*:*]\n";
     return g.str();
   }
   const int column = s.axis == "stress" ? 2 : 3;
-  g << "set xlabel 'axial strain [%]'\nset ylabel '" << axis_title(x, s.axis) << "'\n"
-    << "plot '" << dir << x.id << ".csv' using 1:" << column << " with lines lw 2 lc rgb '#1f77b4' title 'fit', \\\n"
+  g << "set xlabel 'axial strain [%]'\nset ylabel " << common::gp_quoted(axis_title(x, s.axis)) << "\n"
+    << "plot " << common::gp_quoted(dir + x.id + ".csv") << " using 1:" << column << " with lines lw 2 lc rgb '#1f77b4' title 'fit', \\\n"
     << "     " << points << " using 2:($1==" << index << "?$3:1/0) with points pt 7 ps 0.8 lc rgb '#d62728' title 'lab'\n";
   return g.str();
 }
@@ -343,7 +345,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
       }
       std::ostringstream gp;
       const int n = static_cast<int>(problem.series(k).size());
-      gp << "set terminal pngcairo size " << 600 * n << ",450 font ',10'\nset output '" << x.id << ".png.tmp'\n"
+      gp << "set terminal pngcairo size " << 600 * n << ",450 font ',10'\nset output " << common::gp_quoted(x.id + ".png.tmp") << "\n"
          << "set datafile separator ','\nset key top left\nset grid\nset multiplot layout 1," << n << "\n";
       for (std::size_t si = 0; si < problem.series(k).size(); ++si) {
         gp << panel(problem, k, problem.series(k)[si], si, "");
@@ -355,7 +357,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
     }
     const int columns = 6, rows = (panels + columns - 1) / columns;
     add(spec.name + "_overview.gp", "set terminal pngcairo size " + std::to_string(400 * columns) + "," + std::to_string(320 * rows) +
-                                        " font ',8'\nset output '" + spec.name + "_overview.png.tmp'\nset datafile separator ','\n"
+                                        " font ',8'\nset output " + common::gp_quoted(spec.name + "_overview.png.tmp") + "\nset datafile separator ','\n"
                                         "set key top left\nset grid\nset multiplot layout " + std::to_string(rows) + "," +
                                         std::to_string(columns) + "\n" + overview + "unset multiplot\nset output\n");
     if (plot && !common::gnuplot_available()) {

@@ -1,25 +1,76 @@
 #include "acst_common/files.hpp"
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "acst_common/input_error.hpp"
+
 namespace acst::common {
+
+namespace {
+
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a plain file";
+}
+
+std::string mib(std::uintmax_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
+// Closes the descriptor on every way out.
+struct Descriptor {
+  int fd;
+  ~Descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
 
 std::string resolve(const std::string& base_dir, const std::string& name) {
   const std::filesystem::path p(name);
   return p.is_absolute() || base_dir.empty() ? name : (std::filesystem::path(base_dir) / p).string();
 }
 
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+std::string read_input_file(const std::string& path, std::uintmax_t max_bytes) {
+  const std::string quoted = "'" + path + "'";
+  // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
+  const Descriptor d{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (d.fd < 0) throw InputError("cannot open " + quoted + ": " + std::strerror(errno));
+  struct stat st {};
+  if (::fstat(d.fd, &st) != 0) throw InputError("cannot read " + quoted + ": " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw InputError(quoted + " is " + kind_of(st.st_mode) + ", not a regular file");
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
+    throw InputError(quoted + " is larger than the " + mib(max_bytes) + " an input file may have");
+  std::string text(static_cast<std::size_t>(st.st_size), '\0');
+  std::size_t got = 0;
+  for (;;) {
+    if (got == text.size()) {
+      // The file may have grown since fstat: read on, within the cap.
+      if (text.size() >= max_bytes + 1) break;
+      text.resize(std::min<std::uintmax_t>(max_bytes + 1, text.size() + 65536));
+    }
+    const ssize_t n = ::read(d.fd, &text[got], text.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw InputError("cannot read " + quoted + ": " + std::strerror(errno));
+    if (n == 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  if (got > max_bytes) throw InputError(quoted + " is larger than the " + mib(max_bytes) + " an input file may have");
+  text.resize(got);
+  return text;
 }
 
 std::string temporary_name(const std::string& path) {

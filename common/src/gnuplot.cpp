@@ -17,9 +17,25 @@ std::string shell_quoted(const std::string& s) {
 }
 
 std::string gp_quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
+  // Double quotes, because only they have escapes: a line break must not end the string (the
+  // next line would be a command), so it and every other control character goes in as an octal
+  // escape, which keeps file names exact. gnuplot runs `...` inside double quotes as a shell
+  // command before it reads the string: the backquote goes in as \140, seen only after that.
+  std::string q = "\"";
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      q += '\\';
+      q += ch;
+    } else if (c < 0x20 || c == 0x7f || c == '`') {
+      char oct[8];
+      std::snprintf(oct, sizeof oct, "\\%03o", c);
+      q += oct;
+    } else {
+      q += ch;
+    }
+  }
+  return q + "\"";
 }
 
 bool gnuplot_available() {
@@ -35,7 +51,11 @@ std::string run_gnuplot_command(const std::string& dir, const std::string& args)
   const std::string cmd = (dir.empty() ? std::string() : "cd " + shell_quoted(dir) + " && ") + "gnuplot " + args +
                           " >" + shell_quoted(log) + " 2>&1";
   const int rc = std::system(cmd.c_str());
-  const std::string output = read_file(log).value_or("");
+  std::string output;
+  try {
+    output = read_input_file(log);
+  } catch (const std::exception&) {  // no log: the exit status still says what happened
+  }
   std::remove(log.c_str());
   return rc == 0 ? "" : "gnuplot failed (exit " + std::to_string(rc) + "): " + output.substr(0, 600);
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "acst/integration/options.hpp"
+#include "acst_common/one_line.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
 #include "acst/scene_units.hpp"
@@ -37,12 +38,16 @@ std::string csv_text(const Scene& scene, const RunResult& result) {
   const integration::Options& opt = scene.material->options();
   std::string out;
   out.reserve(400 * (result.records.size() + 20));
+  // Names and messages from outside stay on their comment line: a line break would start a
+  // line that readers take for the header row or data.
+  using common::one_line;
   out += "# acst_element: element test '" + scene.output.name + "'" +
-         (scene.source.empty() ? std::string() : " from " + scene.source) + "\n";
+         (scene.source.empty() ? std::string() : " from " + one_line(scene.source)) + "\n";
   char buf[512];
-  std::snprintf(buf, sizeof buf, "# material: %s, model %s, integrator %s stol %g\n", scene.material_source.c_str(),
-                par.variant == Variant::isotropic ? "isotropic" : "ACST", integration::scheme_name(opt.scheme), opt.stol);
-  out += buf;
+  // The file name apart: a long one must not cut the line's end off in the fixed buffer.
+  std::snprintf(buf, sizeof buf, ", model %s, integrator %s stol %g\n", par.variant == Variant::isotropic ? "isotropic" : "ACST",
+                integration::scheme_name(opt.scheme), opt.stol);
+  out += "# material: " + one_line(scene.material_source) + buf;
   Eigen::Vector3d b = scene.initial.deposition_direction.normalized();
   for (int i = 0; i < 3; ++i) b[i] = std::abs(b[i]) < 1e-12 ? 0.0 : b[i];  // cos(90 deg) prints as 0
   std::snprintf(buf, sizeof buf,
@@ -50,7 +55,7 @@ std::string csv_text(const Scene& scene, const RunResult& result) {
                 vec(scene.initial.stress).c_str(), scene.initial.void_ratio, scene.initial.bedding_angle_deg, b[0], b[1],
                 b[2], scene.initial.fabric ? ", fabric given" : "");
   out += buf;
-  for (const auto& lab : scene.lab_data) out += "# lab data: " + lab + "\n";
+  for (const auto& lab : scene.lab_data) out += "# lab data: " + one_line(lab) + "\n";
   out +=
       "# convention: geotechnical, COMPRESSION POSITIVE for stresses and strains; test frame: axis 1 = axial (major "
       "loading), 2 = intermediate (eps_22 = 0 in plane strain), 3 = minor lateral\n"
@@ -66,7 +71,7 @@ std::string csv_text(const Scene& scene, const RunResult& result) {
       "step within the repeat block\n"
       "# substeps: accepted material substeps; iterations: Newton iterations (all cut-back pieces); cutbacks: "
       "halvings of the increment; status: start | ok | cutback | exit:<condition>\n";
-  if (!result.ok) out += "# RUN FAILED: " + result.message + "\n";
+  if (!result.ok) out += "# RUN FAILED: " + one_line(result.message) + "\n";
   out +=
       "increment,time,step,cycle,stage,eps_11_pct,eps_22_pct,eps_33_pct,gamma_12_pct,gamma_13_pct,gamma_23_pct,"
       "sigma_11_kPa,sigma_22_kPa,sigma_33_kPa,sigma_12_kPa,sigma_13_kPa,sigma_23_kPa,p_kPa,q_kPa,stress_ratio,"

@@ -1,10 +1,13 @@
 #include "acst_driver/lab_data.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
+
+#include "acst_common/files.hpp"
 
 namespace acst::driver {
 
@@ -54,8 +57,7 @@ std::string LabCurve::text(const std::string& key) const {
 }
 
 LabCurve read_commented_csv(const std::string& path, bool text_as_nan) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the file");
+  std::istringstream in(common::read_input_file(path));  // a regular file of bounded size, or why not
   LabCurve c;
   c.path = path;
   std::string line;
@@ -93,6 +95,7 @@ LabCurve read_commented_csv(const std::string& path, bool text_as_nan) {
       }
       c.values[i].push_back(v);
     }
+    c.lines.push_back(line_no);
   }
   if (c.columns.empty()) throw std::runtime_error(path + ": no header row (column names) found");
   return c;
@@ -108,6 +111,20 @@ LabCurve read_lab_curve(const std::string& path) {
   bool has_series = false;
   for (const auto& name : c.columns) has_series = has_series || name == "q_kPa" || name == "eps_v_pct" || name == "stress_ratio";
   if (!has_series) throw std::runtime_error(path + ": none of the columns q_kPa, stress_ratio, eps_v_pct is present");
+  // Readers interpolate along the strain and take a series' extent from its last row: rows out of
+  // order would silently change both.
+  const std::vector<double> eps_a = c.column("eps_a_pct");
+  std::size_t previous = eps_a.size();
+  for (std::size_t i = 0; i < eps_a.size(); ++i) {
+    if (std::isnan(eps_a[i])) continue;
+    if (previous < eps_a.size() && eps_a[i] < eps_a[previous]) {
+      char what[160];
+      std::snprintf(what, sizeof what, "eps_a_pct %.6g is below the %.6g of line %d", eps_a[i], eps_a[previous], c.lines[previous]);
+      throw std::runtime_error(path + ":" + std::to_string(c.lines[i]) + ": " + what +
+                               ": rows must be sorted by eps_a_pct (lab-data format, data/lab/README.md)");
+    }
+    previous = i;
+  }
   return c;
 }
 

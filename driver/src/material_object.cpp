@@ -1,7 +1,5 @@
 #include "acst_driver/material_object.hpp"
 
-#include <optional>
-
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
 
@@ -23,9 +21,13 @@ MaterialObject read_material_object(const json& j, const std::string& path, cons
   f::allow_keys(j, {"file", "integrator"}, path);
   m.source = f::string(j["file"], path + "/file");
   const std::string file = common::resolve(base_dir, m.source);
-  const std::optional<std::string> text = common::read_file(file);
-  if (!text) f::fail(path + "/file", "cannot read the material file '" + file + "'");
-  m.object = f::parse(*text, path + "/file", "the material file '" + file + "'");
+  std::string text;
+  try {
+    text = common::read_input_file(file);
+  } catch (const common::InputError& e) {
+    f::fail(path + "/file", std::string("cannot read the material file: ") + e.what());
+  }
+  m.object = f::parse(text, path + "/file", "the material file '" + file + "'");
   m.path = path + "/file (" + file + ")";
   f::object(m.object, m.path);
   if (j.contains("integrator")) {

@@ -2,12 +2,12 @@
 // Steps are read in step_reader.cpp. Every error names the JSON path.
 #include <Eigen/SVD>
 #include <filesystem>
-#include <regex>
 
 #include "acst/fabric.hpp"
 #include "acst/json_input.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/plain_stem.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/material_object.hpp"
 #include "acst_driver/presets.hpp"
@@ -121,9 +121,7 @@ void read_output(const json& j, const std::string& path, OutputSpec& o) {
     if (o.directory.empty()) f::fail(path + "/directory", "must not be empty");
   }
   if (j.contains("name")) {
-    o.name = f::string(j["name"], path + "/name");
-    if (!std::regex_match(o.name, std::regex("[A-Za-z0-9_.+-]{1,120}")) || o.name[0] == '.')
-      f::fail(path + "/name", "'" + o.name + "' is not a plain file stem (letters, digits, _ . + -; not starting with a dot)");
+    o.name = common::require_plain_stem(f::string(j["name"], path + "/name"), path + "/name");
   }
   if (j.contains("every")) o.every = static_cast<int>(f::integer(j["every"], path + "/every", 1, 1000000000));
   if (j.contains("plot")) o.plot = f::boolean(j["plot"], path + "/plot");
@@ -192,7 +190,9 @@ Scene parse_scene(const std::string& text, const std::string& base_dir, const st
   scene.blocks = read_steps(j["steps"], "/steps", base_dir);
   if (j.contains("solver")) read_solver(j["solver"], "/solver", scene.solver);
   if (j.contains("output")) read_output(j["output"], "/output", scene.output);
-  if (scene.output.name.empty()) scene.output.name = default_name.empty() ? "element_test" : default_name;
+  if (scene.output.name.empty())  // the scene file's stem names the outputs and reaches the figure's script
+    scene.output.name = common::require_plain_stem(default_name.empty() ? "element_test" : default_name,
+                                                   "/output/name (not given; the scene file's name would be used)");
   if (j.contains("lab_data")) read_lab_data(j["lab_data"], "/lab_data", base_dir, scene);
   for (const Block& b : scene.blocks)
     for (const Step& s : b.steps)
@@ -203,10 +203,14 @@ Scene parse_scene(const std::string& text, const std::string& base_dir, const st
 }
 
 Scene read_scene(const std::string& path) {
-  const std::optional<std::string> text = common::read_file(path);
-  if (!text) throw common::InputError("cannot read the scene file '" + path + "'");
+  std::string text;
+  try {
+    text = common::read_input_file(path);
+  } catch (const common::InputError& e) {
+    throw common::InputError(std::string("cannot read the scene file: ") + e.what());
+  }
   const std::filesystem::path p(path);
-  Scene s = parse_scene(*text, p.parent_path().string(), p.stem().string());
+  Scene s = parse_scene(text, p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

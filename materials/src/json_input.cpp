@@ -132,8 +132,8 @@ integration::Options options_from_json(const json& j, const std::string& path) {
 json model_document(const std::string& text) {
   json j;
   try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // syntax errors and numbers beyond double range
+    j = f::parse_document(text);  // syntax errors, numbers beyond double range, too deep a nesting
+  } catch (const InputError& e) {
     throw InputError(std::string("material JSON does not parse: ") + e.what());
   }
   f::object(j, "");

@@ -1,13 +1,17 @@
 #include "acst_mpm/checkpoint.hpp"
 
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
+#include "acst_common/input_error.hpp"
 
 namespace acst::mpm {
 namespace {
+
+constexpr std::uintmax_t max_checkpoint_bytes = std::uintmax_t{16} << 30;
 
 constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '2'};
 
@@ -108,9 +112,14 @@ void write_checkpoint(const std::string& path, const Scene& scene, const Simulat
 }
 
 void read_checkpoint(const std::string& path, const Scene& scene, Simulation& sim, RunState& state) {
-  const std::optional<std::string> text = common::read_file(path);
-  if (!text) throw SimulationError("cannot open checkpoint '" + path + "'");
-  const std::string& data = *text;
+  std::string data;
+  try {
+    // A checkpoint grows with the particles and the load record, beyond the cap of the small
+    // inputs; its own cap only stops a file that cannot be one (the reader checks the rest).
+    data = common::read_input_file(path, max_checkpoint_bytes);
+  } catch (const common::InputError& e) {
+    throw common::InputError(std::string("--resume: cannot read the checkpoint: ") + e.what());  // the user's bad input: exit 2
+  }
   Reader r{data, 0, path};
   r.need(sizeof magic);
   if (std::memcmp(data.data(), magic, sizeof magic) != 0) throw SimulationError("'" + path + "' is not an acst_mpm checkpoint");

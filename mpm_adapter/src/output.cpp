@@ -7,6 +7,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
+#include "acst_common/one_line.hpp"
 #include "acst_mpm/fields.hpp"
 
 namespace acst::mpm {
@@ -31,7 +32,7 @@ void scalar_array(std::string& out, const char* name, const std::vector<double>&
 }  // namespace
 
 std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history) {
-  std::string out = "# acst_mpm load-settlement record of scene '" + scene.name + "'\n";
+  std::string out = "# acst_mpm load-settlement record of scene '" + common::one_line(scene.name) + "'\n";
   out += "# loads per metre out of plane, averaged over each period of " + std::to_string(scene.solver.xpic_every) +
          " steps (one row per step with every_step_csv); V: vertical load of the footing on the soil (positive "
          "downward), H: horizontal (positive toward +x), q = V/B; M: moment of the footing's load on the soil about "

@@ -1,6 +1,6 @@
 #pragma once
 // Reading input files and writing output files that are never left half written.
-#include <optional>
+#include <cstdint>
 #include <string>
 
 namespace acst::common {
@@ -9,9 +9,16 @@ namespace acst::common {
 // folder of the file that names it.
 std::string resolve(const std::string& base_dir, const std::string& name);
 
-// The whole content of a file, or nothing when it cannot be opened (the caller says why, in
-// its own terms: a JSON path, a command-line argument).
-std::optional<std::string> read_file(const std::string& path);
+// Inputs larger than this are refused: every input of the tools (scenes, fit descriptions,
+// material and lab files) is far smaller, and a bigger one is a mistake that would otherwise be
+// read into memory whole.
+inline constexpr std::uintmax_t max_input_bytes = std::uintmax_t{64} << 20;
+
+// The whole content of the regular file `path` of at most `max_bytes`. Anything else (missing,
+// unreadable, a directory, a device such as /dev/zero, a FIFO, too large) throws InputError
+// naming the file and saying why, for the caller to prefix with its own terms (a JSON path, a
+// command-line argument). A FIFO is opened without waiting for a writer.
+std::string read_input_file(const std::string& path, std::uintmax_t max_bytes = max_input_bytes);
 
 // A hidden temporary name beside `path`, unique to this process.
 std::string temporary_name(const std::string& path);

@@ -7,8 +7,11 @@ namespace acst::common {
 // Whether gnuplot is on PATH (looked up once).
 bool gnuplot_available();
 
-// A string quoted for the POSIX shell, and one quoted for gnuplot (single quotes).
+// A string quoted for the POSIX shell.
 std::string shell_quoted(const std::string& s);
+// The one way text reaches a gnuplot script (titles, labels, file names): a gnuplot string
+// literal that reads back as exactly `s` and can neither end early nor run a command, whatever
+// `s` holds (quotes, backslashes, line breaks, backquotes, '@').
 std::string gp_quoted(const std::string& s);
 
 // Runs `gnuplot ARGS` (arguments already quoted for the shell) inside folder `dir` ("" = the

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "acst_common/input_error.hpp"
@@ -30,16 +31,102 @@ inline std::string shown(double v) {
   return buf;
 }
 
-// Parses `text`; a syntax error or a number beyond the range of a double fails at `path`,
-// naming `what` ("the scene", "the material file 'x.json'").
-inline json parse(const std::string& text, const std::string& path, const std::string& what) {
-  try {
-    return json::parse(text);
-  } catch (const json::exception& e) {
+// Arrays and objects nested deeper than this are refused while parsing: no input of the project
+// comes near it, and a deeper document (a file of '[') would overflow the stack of every
+// recursive walk that follows (copy, dump, comparison).
+inline constexpr std::size_t max_json_depth = 100;
+
+namespace detail {
+
+// Builds the document from the parser's events (nlohmann's SAX interface) and keeps the JSON
+// path of the value being read, so that an error found in the text (a number beyond the range of
+// a double, too deep a nesting, a syntax error) says where it is.
+class PathKeepingBuilder {
+ public:
+  json root;
+
+  bool null() { return value(nullptr); }
+  bool boolean(bool v) { return value(v); }
+  bool number_integer(json::number_integer_t v) { return value(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return value(v); }
+  bool number_float(json::number_float_t v, const json::string_t&) { return value(v); }
+  bool string(json::string_t& v) { return value(std::move(v)); }
+  bool binary(json::binary_t& v) { return value(json::binary(std::move(v))); }  // not in JSON text
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool key(json::string_t& k) {
+    open_.back().key = k;
+    return true;
+  }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool parse_error(std::size_t, const std::string&, const json::exception& e) {
     std::string msg = e.what();
     const auto bracket = msg.find("] ");
     if (msg.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) msg = msg.substr(bracket + 2);
-    fail(path, what + " is not valid JSON: " + msg);
+    throw InputError(where() + msg);
+  }
+
+ private:
+  struct Open {
+    json* node;
+    std::string key;  // of the member being read, in an object
+  };
+  std::vector<Open> open_;  // the containers around the value being read, outermost first
+
+  json* place(json&& v) {
+    if (open_.empty()) return &(root = std::move(v));
+    json& parent = *open_.back().node;
+    if (!parent.is_array()) return &(parent[open_.back().key] = std::move(v));
+    parent.push_back(std::move(v));
+    return &parent.back();
+  }
+  bool value(json&& v) {
+    place(std::move(v));
+    return true;
+  }
+  bool open(json&& container) {
+    if (open_.size() >= max_json_depth)
+      throw InputError(where() + "arrays and objects are nested deeper than " + std::to_string(max_json_depth) + " levels");
+    open_.push_back({place(std::move(container)), {}});
+    return true;
+  }
+  bool close() {
+    open_.pop_back();
+    return true;
+  }
+  // "at /experiments/3/weight: " (the start of a deep path only), or "" at the top.
+  std::string where() const {
+    std::string p;
+    for (std::size_t i = 0; i < open_.size() && p.size() < 160; ++i) {
+      const json& n = *open_[i].node;
+      // An open container inside an array is its last element; the value being read comes next.
+      p += "/" + (n.is_array() ? std::to_string(n.size() - (i + 1 < open_.size() ? 1 : 0)) : open_[i].key);
+    }
+    if (p.size() >= 160) p = p.substr(0, 160) + "...";
+    return p.empty() ? std::string() : "at " + p + ": ";
+  }
+};
+
+}  // namespace detail
+
+// The one JSON parser of the project: `text` as a document, or an InputError that says why not
+// and where inside the document ("at /experiments/3/weight: number overflow parsing '1e999'"):
+// a syntax error with its line and column, a number beyond the range of a double, nesting deeper
+// than max_json_depth. The callers below put the document's own path in front.
+inline json parse_document(const std::string& text) {
+  detail::PathKeepingBuilder builder;
+  json::sax_parse(text, &builder);
+  return std::move(builder.root);
+}
+
+// Parses `text`; a syntax error, a number beyond the range of a double or too deep a nesting
+// fails at `path`, naming `what` ("the scene", "the material file 'x.json'").
+inline json parse(const std::string& text, const std::string& path, const std::string& what) {
+  try {
+    return parse_document(text);
+  } catch (const InputError& e) {
+    fail(path, what + " is not valid JSON: " + e.what());
   }
 }
 

@@ -13,6 +13,7 @@ struct LabCurve {
   std::map<std::string, std::string> meta;  // header keys: sigma3_kPa, e0, bedding_angle_deg, ...
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;  // values[column][row], NaN where the cell is empty
+  std::vector<int> lines;                   // lines[row]: the row's line in the file, for messages
 
   // The column's values (NaN where empty); an empty vector if the file has no such column.
   std::vector<double> column(const std::string& name) const;
@@ -21,7 +22,8 @@ struct LabCurve {
   std::string text(const std::string& key) const;  // "" when absent
 };
 
-// Throws std::runtime_error("path:line: what") on unreadable or malformed files.
+// Throws std::runtime_error("path:line: what") on unreadable or malformed files, and on rows not
+// sorted by eps_a_pct (ties allowed; rows without eps_a_pct are skipped).
 LabCurve read_lab_curve(const std::string& path);
 
 // Generic reader of `# ...` commented CSV tables with a header row (also used for strain paths

@@ -10,8 +10,9 @@ namespace acst::mpm {
 
 void write_checkpoint(const std::string& path, const Scene& scene, const Simulation& sim, const RunState& state);
 
-// Loads into a simulation built from the same scene; throws SimulationError when the file is
-// unreadable, truncated, or was written for another scene or particle count.
+// Loads into a simulation built from the same scene; throws common::InputError when the file
+// cannot be read (missing, not a regular file, too large), SimulationError when it is truncated,
+// or was written for another scene or particle count.
 void read_checkpoint(const std::string& path, const Scene& scene, Simulation& sim, RunState& state);
 
 }  // namespace acst::mpm
