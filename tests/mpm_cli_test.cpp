@@ -6,10 +6,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 #include "acst_driver/cli.hpp"
 #include "acst_mpm/cli.hpp"
+#include "scratch.hpp"
 
 namespace fs = std::filesystem;
 using acst::mpm::mpm_cli;
@@ -30,12 +30,7 @@ Cli run(const std::vector<std::string>& args) {
   return c;
 }
 
-fs::path scratch(const std::string& tag) {
-  const fs::path d = fs::temp_directory_path() / ("acst_mpm_cli_" + tag + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch(const std::string& tag) { return acst::test::scratch_folder("mpm_cli_" + tag); }
 
 }  // namespace
 

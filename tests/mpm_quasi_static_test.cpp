@@ -11,11 +11,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 #include "acst_mpm/cli.hpp"
 #include "acst_mpm/runner.hpp"
 #include "mpm_scenes.hpp"
+#include "scratch.hpp"
 
 namespace fs = std::filesystem;
 using namespace acst::mpm;
@@ -30,11 +30,22 @@ std::string block(double speed, const std::string& footing_extra = "", const std
                                  R"({"grid_damping": 2})");
 }
 
-fs::path scratch(const std::string& tag) {
-  const fs::path d = fs::temp_directory_path() / ("acst_mpm_qs_" + tag + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+// Runs a scene quietly into a fresh folder; the summary and the folder's summary.json.
+struct QuietRun {
+  RunSummary summary;
+  nlohmann::json json;
+};
+QuietRun run_quietly(const std::string& scene, const std::string& tag) {
+  const fs::path dir = acst::test::scratch_folder("mpm_qs_" + tag);
+  RunOptions o;
+  o.output_dir = dir.string();
+  o.quiet = true;
+  o.plot = false;
+  QuietRun r{run_scene(parse_scene(scene), o), {}};
+  std::ifstream f(dir / "summary.json");
+  r.json = nlohmann::json::parse(f);
+  fs::remove_all(dir);
+  return r;
 }
 
 }  // namespace
@@ -87,22 +98,14 @@ TEST(QuasiStatic, ExcessWarnsOrStopsAsTheSceneAsks) {
   // At 0.5 m/s the kinetic ratio past S/B 0.02 is about 1e-2 on this block; a limit of 1e-6 is exceeded.
   const std::string limit = R"(, "quasi_static": {"kinetic_ratio_limit": 1e-6)";
   {
-    const fs::path dir = scratch("warn");
-    RunOptions o;
-    o.output_dir = dir.string();
-    o.quiet = true;
-    o.plot = false;
-    const RunSummary sum = run_scene(parse_scene(block(0.5, "", limit + "}")), o);
-    ASSERT_EQ(sum.warnings.size(), 1u);
-    EXPECT_NE(sum.warnings[0].find("quasi_static/kinetic_ratio_limit"), std::string::npos) << sum.warnings[0];
-    std::ifstream f(dir / "summary.json");
-    const nlohmann::json j = nlohmann::json::parse(f);
-    EXPECT_FALSE(j.at("quasi_static").get<bool>());
-    EXPECT_GT(j.at("max_kinetic_ratio").get<double>(), 1e-6);
-    fs::remove_all(dir);
+    const QuietRun r = run_quietly(block(0.5, "", limit + "}"), "warn");
+    ASSERT_EQ(r.summary.warnings.size(), 1u);
+    EXPECT_NE(r.summary.warnings[0].find("quasi_static/kinetic_ratio_limit"), std::string::npos) << r.summary.warnings[0];
+    EXPECT_FALSE(r.json.at("quasi_static").get<bool>());
+    EXPECT_GT(r.json.at("max_kinetic_ratio").get<double>(), 1e-6);
   }
   {
-    const fs::path dir = scratch("stop");
+    const fs::path dir = acst::test::scratch_folder("mpm_qs_stop");
     const fs::path scene = dir / "fast.json";
     std::ofstream(scene) << block(0.5, "", limit + R"(, "on_excess": "stop"})");
     std::ostringstream out, err;
@@ -114,16 +117,9 @@ TEST(QuasiStatic, ExcessWarnsOrStopsAsTheSceneAsks) {
     fs::remove_all(dir);
   }
   {  // within the limit: no warning, the summary says quasi-static
-    const fs::path dir = scratch("ok");
-    RunOptions o;
-    o.output_dir = dir.string();
-    o.quiet = true;
-    o.plot = false;
-    const RunSummary sum = run_scene(parse_scene(block(0.5, "", R"(, "quasi_static": {"kinetic_ratio_limit": 0.5})")), o);
-    EXPECT_TRUE(sum.warnings.empty());
-    std::ifstream f(dir / "summary.json");
-    EXPECT_TRUE(nlohmann::json::parse(f).at("quasi_static").get<bool>());
-    fs::remove_all(dir);
+    const QuietRun r = run_quietly(block(0.5, "", R"(, "quasi_static": {"kinetic_ratio_limit": 0.5})"), "ok");
+    EXPECT_TRUE(r.summary.warnings.empty());
+    EXPECT_TRUE(r.json.at("quasi_static").get<bool>());
   }
 }
 

@@ -220,15 +220,6 @@ class Run {
     return text;
   }
 
-  // The record with the largest kinetic ratio past the check's start (history is checkpointed,
-  // so a resumed run judges its whole record).
-  const LoadRecord* most_dynamic() const {
-    const LoadRecord* worst = nullptr;
-    for (const LoadRecord& r : st_.history)
-      if (kinetic_ratio(r) > 0.0 && (!worst || kinetic_ratio(r) > kinetic_ratio(*worst))) worst = &r;
-    return worst;
-  }
-
   void write_results(RunSummary& sum) {
     common::write_file_atomically(path("load_settlement.csv"), load_csv_text(scene_, rows()));
     std::remove(path("load_settlement.partial.csv").c_str());
@@ -237,8 +228,11 @@ class Run {
     sum.S_ult_over_B = st_.peak.S_over_B;
     sum.S_ult = st_.peak.S_over_B * B_;
     sum.peak_reached = scene_.footing && sum.residual_V < 0.98 * sum.Q_ult;
-    const LoadRecord* worst = most_dynamic();
-    const double max_ratio = worst ? kinetic_ratio(*worst) : 0.0;
+    // The whole record is judged (it is checkpointed, so a resumed run judges its whole run too).
+    double max_ratio = 0.0;
+    const LoadRecord* worst = nullptr;
+    for (const LoadRecord& r : st_.history)
+      if (kinetic_ratio(r) > max_ratio) max_ratio = kinetic_ratio(r), worst = &r;
     if (max_ratio > scene_.quasi_static.kinetic_ratio_limit) sum.warnings.push_back(quasi_static_message(*worst));
     if (opt_.plot && scene_.footing) {
       const std::string w = write_load_figure(scene_, opt_.output_dir, "load_settlement.csv");
