@@ -17,6 +17,7 @@
 #include "acst_common/json_fields.hpp"
 #include "acst_common/parallel_for.hpp"
 #include "acst_common/plain_stem.hpp"
+#include "acst_common/result_folder.hpp"
 
 namespace fs = std::filesystem;
 namespace f = acst::common::fields;
@@ -65,6 +66,38 @@ TEST(CommonFiles, AtomicWriteReplacesWholeOrLeavesTheOldFile) {
   for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename().string()[0] == '.';
   EXPECT_EQ(entries, 0) << "a temporary file was left";
   EXPECT_THROW(acst::common::read_input_file((dir / "none").string()), InputError);
+  fs::remove_all(dir);
+}
+
+// A folder of an earlier run is emptied into previous/ (which the next run replaces); a move
+// interrupted half way is finished by the next call, so no file is lost or left beside a new run.
+TEST(CommonFiles, AnEarlierRunIsSetAsideWholeEvenAfterAnInterruption) {
+  using acst::common::set_aside_earlier_run;
+  const fs::path dir = fs::temp_directory_path() / ("acst_common_aside_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const auto own = [](const std::string& name) { return name.rfind("run_", 0) == 0 || acst::common::is_temporary_name(name); };
+  EXPECT_EQ(set_aside_earlier_run(dir.string(), own), 0u);  // created, nothing to move
+  EXPECT_TRUE(fs::is_directory(dir));
+  for (const char* f : {"run_a.csv", "run_b.vtp", ".run_c.csv.tmp123"}) std::ofstream(dir / f) << f;
+  EXPECT_EQ(set_aside_earlier_run(dir.string(), own), 3u);
+  EXPECT_TRUE(fs::exists(dir / "previous" / "run_b.vtp"));
+  // interrupted: one file already in previous.new, one still in the folder
+  fs::create_directories(dir / "previous.new");
+  std::ofstream(dir / "previous.new" / "run_d.csv") << "d";
+  std::ofstream(dir / "run_e.csv") << "e";
+  EXPECT_EQ(set_aside_earlier_run(dir.string(), own), 1u);
+  EXPECT_FALSE(fs::exists(dir / "previous.new"));
+  EXPECT_TRUE(fs::exists(dir / "previous" / "run_d.csv"));
+  EXPECT_TRUE(fs::exists(dir / "previous" / "run_e.csv"));
+  EXPECT_FALSE(fs::exists(dir / "previous" / "run_b.vtp")) << "the older run is replaced";
+  // anything the tool does not write is refused, and nothing moves
+  std::ofstream(dir / "run_f.csv") << "f";
+  fs::create_directories(dir / "run_folder");
+  EXPECT_THROW(set_aside_earlier_run(dir.string(), own), InputError);
+  EXPECT_TRUE(fs::exists(dir / "run_f.csv"));
+  EXPECT_FALSE(acst::common::is_temporary_name(".tmp1"));
+  EXPECT_FALSE(acst::common::is_temporary_name(".a.tmp"));
+  EXPECT_FALSE(acst::common::is_temporary_name("a.tmp12"));
   fs::remove_all(dir);
 }
 

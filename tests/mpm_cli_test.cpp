@@ -122,3 +122,82 @@ TEST(MpmCli, AMaterialFailureLeavesAReproducerThatTheElementDriverReplays) {
   EXPECT_NE(e.str().find("more substeps than allowed"), std::string::npos) << e.str();
   fs::remove_all(dir);
 }
+
+namespace {
+
+void write_elastic_scene(const fs::path& file, int steps) {
+  std::ofstream(file) << R"({"name": "elastic", "grid": {"cell_size": 0.5},
+    "materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}},
+    "bodies": [{"material": "soil", "x_range": [0, 2], "y_range": [0, 1], "density": 1000}],
+    "output": {"checkpoint_every_s": 1e-9}, "stop": {"steps": )" + std::to_string(steps) + "}}";
+}
+
+std::string text_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+// A new run into a used folder never leaves the files of two runs side by side: the earlier
+// run's files go into previous/ (replacing an older one) before the first frame is written.
+TEST(MpmCli, ARerunSetsTheEarlierRunAsideInsteadOfMixingFrames) {
+  const fs::path dir = scratch("rerun");
+  const fs::path out = dir / "out";
+  write_elastic_scene(dir / "elastic.json", 3);
+  ASSERT_EQ(run({"--quiet", "--no-plot", "--threads", "1", "--output", out.string(), (dir / "elastic.json").string()}).rc, 0);
+  const std::string first_summary = text_of(out / "summary.json");
+  std::ofstream(out / "particles_0042.vtp") << "a frame of the earlier run";  // as an interrupted longer run leaves
+  write_elastic_scene(dir / "elastic.json", 2);
+  const Cli again = run({"--quiet", "--no-plot", "--threads", "1", "--output", out.string(), (dir / "elastic.json").string()});
+  ASSERT_EQ(again.rc, 0) << again.err;
+  EXPECT_FALSE(fs::exists(out / "particles_0042.vtp")) << "no frame of the earlier run beside the new ones";
+  EXPECT_TRUE(fs::exists(out / "previous" / "particles_0042.vtp"));
+  EXPECT_EQ(text_of(out / "previous" / "summary.json"), first_summary);
+  EXPECT_NE(text_of(out / "summary.json").find("\"steps\": 2"), std::string::npos);
+  // a third run replaces previous/ with the second run
+  ASSERT_EQ(run({"--quiet", "--no-plot", "--threads", "1", "--output", out.string(), (dir / "elastic.json").string()}).rc, 0);
+  EXPECT_FALSE(fs::exists(out / "previous" / "particles_0042.vtp"));
+  EXPECT_NE(text_of(out / "previous" / "summary.json").find("\"steps\": 2"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A folder holding anything acst_mpm does not write is refused (exit 2) and left as it was.
+TEST(MpmCli, AFolderWithOtherFilesIsRefusedAndLeftAlone) {
+  const fs::path dir = scratch("foreign");
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "thesis.tex") << "years of work";
+  std::ofstream(out / "summary.json") << "{}";
+  write_elastic_scene(dir / "elastic.json", 2);
+  const std::vector<std::string> before = acst::test::everything_under(out);
+  const Cli c = run({"--quiet", "--no-plot", "--output", out.string(), (dir / "elastic.json").string()});
+  EXPECT_EQ(c.rc, 2);
+  EXPECT_NE(c.err.find("holds 'thesis.tex', which this tool does not write"), std::string::npos) << c.err;
+  EXPECT_EQ(acst::test::everything_under(out), before);
+  EXPECT_EQ(text_of(out / "thesis.tex"), "years of work");
+  fs::remove_all(dir);
+}
+
+// --resume with a damaged checkpoint: exit 2, the message names the file, and the folder of the
+// interrupted run is left as it was (its good files are not set aside or overwritten).
+TEST(MpmCli, ADamagedCheckpointIsRefusedWithExitTwo) {
+  const fs::path dir = scratch("damaged");
+  const fs::path out = dir / "out";
+  write_elastic_scene(dir / "elastic.json", 3);
+  ASSERT_EQ(run({"--quiet", "--no-plot", "--threads", "1", "--output", out.string(), (dir / "elastic.json").string()}).rc, 0);
+  ASSERT_TRUE(fs::exists(out / "checkpoint.bin"));
+  std::string bytes = text_of(out / "checkpoint.bin");
+  bytes[bytes.size() / 2] ^= 0x10;
+  std::ofstream(out / "checkpoint.bin", std::ios::binary) << bytes;
+  const std::vector<std::string> before = acst::test::everything_under(out);
+  const std::string summary = text_of(out / "summary.json");
+  const Cli c = run({"--quiet", "--no-plot", "--threads", "1", "--output", out.string(), "--resume",
+                     (out / "checkpoint.bin").string(), (dir / "elastic.json").string()});
+  EXPECT_EQ(c.rc, 2);
+  EXPECT_NE(c.err.find("is damaged"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("checkpoint.bin"), std::string::npos) << c.err;
+  EXPECT_EQ(acst::test::everything_under(out), before);
+  EXPECT_EQ(text_of(out / "summary.json"), summary);
+  fs::remove_all(dir);
+}

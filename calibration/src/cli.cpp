@@ -10,6 +10,7 @@
 #include "acst_calibration/fit_spec.hpp"
 #include "acst_common/cli.hpp"
 #include "acst_common/duration.hpp"
+#include "acst_common/result_folder.hpp"
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
 #include "acst_calibration/report.hpp"
@@ -26,7 +27,8 @@ void usage(std::ostream& o) {
        "Fits ACST (or isotropic) parameters to lab curves described by a JSON fit description\n"
        "(docs/calibration.md): a small design of parameter sets, then GSL trust-region least-squares\n"
        "fits from the best of them, each evaluation running every element test in parallel.\n"
-       "Writes into the description's output.directory (default results/calibration) or DIR:\n"
+       "Writes into the description's output.directory (default results/calibration/NAME) or DIR,\n"
+       "a folder that holds nothing or an earlier result of the same fit, replaced as a whole:\n"
        "  NAME_parameters.json            the fitted material (loadable by acst_element scenes)\n"
        "  NAME_parameters_GROUP.json      one per group, when a parameter is fitted per group\n"
        "  NAME_report.md, NAME_report.json  errors per test, standard errors, 95 % intervals,\n"
@@ -69,6 +71,8 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     spec = read_fit_spec(file);
     if (threads >= 0) spec.optimizer.threads = threads;
     if (!output.empty()) spec.output_dir = output;
+    // Before hours of fitting, not after: the result set replaces the folder as a whole.
+    common::require_own_folder(spec.output_dir, [&](const std::string& e) { return is_fit_output_name(spec.name, e); });
   } catch (const common::InputError& e) {
     err << "acst_fit: " << file << ": " << e.what() << '\n';
     return 2;

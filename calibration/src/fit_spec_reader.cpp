@@ -321,6 +321,7 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
     if (j["output"].contains("directory")) s.output_dir = f::string(j["output"]["directory"], "/output/directory");
     if (j["output"].contains("reference_group")) s.reference_group = f::string(j["output"]["reference_group"], "/output/reference_group");
   }
+  if (s.output_dir.empty()) s.output_dir = "results/calibration/" + s.name;
   if (s.reference_group.empty()) s.reference_group = s.groups.front();
   if (std::find(s.groups.begin(), s.groups.end(), s.reference_group) == s.groups.end())
     f::fail("/output/reference_group", "no experiment is in the group '" + s.reference_group + "'");

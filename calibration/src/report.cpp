@@ -1,8 +1,6 @@
 // Reports and overlays of a calibration (see report.hpp).
 #include "acst_calibration/report.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +9,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
+#include "acst_common/result_folder.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
 
@@ -288,20 +287,19 @@ std::string report_markdown(const json& r) {
   return m.str();
 }
 
+bool is_fit_output_name(const std::string& fit_name, const std::string& entry) {
+  return entry == "curves" || entry.rfind(fit_name + "_", 0) == 0 || common::is_temporary_name(entry);
+}
+
 std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit, const std::vector<SimulationOutcome>& outcomes,
                                        const RunInfo& info, const std::string& directory, bool plot) {
   const FitSpec& spec = problem.spec();
-  const fs::path dir(directory);
-  fs::create_directories(dir);
-  const fs::path scratch = dir / (".scratch-" + spec.name + "-" + std::to_string(::getpid()));
+  common::require_own_folder(directory, [&](const std::string& e) { return is_fit_output_name(spec.name, e); });
+  const fs::path scratch = common::staging_folder_for(directory);
   fs::remove_all(scratch);
   fs::create_directories(scratch / "curves");
   std::vector<std::string> warnings;
-  std::vector<fs::path> files;  // relative to scratch
-  auto add = [&](const fs::path& rel, const std::string& text) {
-    write_text(scratch / rel, text);
-    files.push_back(rel);
-  };
+  auto add = [&](const fs::path& rel, const std::string& text) { write_text(scratch / rel, text); };
   try {
     add(spec.name + "_parameters.json", fitted_material(problem, fit.theta, spec.reference_group).dump(2) + "\n");
     bool per_group = false;
@@ -363,31 +361,21 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
     if (plot && !common::gnuplot_available()) {
       warnings.push_back("gnuplot not found: no PNG figures (the CSV and .gp files are written)");
     } else if (plot) {
-      std::vector<fs::path> pngs;
       for (const ExperimentSpec& x : spec.experiments) {
         const std::string w = run_gnuplot_in(scratch / "curves", x.id + ".gp");
         if (w.empty()) fs::rename(scratch / "curves" / (x.id + ".png.tmp"), scratch / "curves" / (x.id + ".png"));
-        if (w.empty()) pngs.push_back(fs::path("curves") / (x.id + ".png"));
         else warnings.push_back(w);
       }
       const std::string w = run_gnuplot_in(scratch, spec.name + "_overview.gp");
-      if (w.empty()) {
-        fs::rename(scratch / (spec.name + "_overview.png.tmp"), scratch / (spec.name + "_overview.png"));
-        pngs.push_back(spec.name + "_overview.png");
-      } else {
-        warnings.push_back(w);
-      }
-      files.insert(files.end(), pngs.begin(), pngs.end());
+      if (w.empty()) fs::rename(scratch / (spec.name + "_overview.png.tmp"), scratch / (spec.name + "_overview.png"));
+      else warnings.push_back(w);
     }
-    fs::create_directories(dir / "curves");
-    for (const fs::path& f : files) fs::rename(scratch / f, dir / f);
+    common::publish_folder(scratch.string(), directory);
   } catch (...) {
     std::error_code ec;
     fs::remove_all(scratch, ec);
     throw;
   }
-  std::error_code ec;
-  fs::remove_all(scratch, ec);
   return warnings;
 }
 

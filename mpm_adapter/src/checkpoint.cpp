@@ -1,11 +1,12 @@
 #include "acst_mpm/checkpoint.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
 
+#include "acst_common/checksum.hpp"
 #include "acst_common/files.hpp"
-#include "acst_common/gnuplot.hpp"
 #include "acst_common/input_error.hpp"
 
 namespace acst::mpm {
@@ -13,7 +14,10 @@ namespace {
 
 constexpr std::uintmax_t max_checkpoint_bytes = std::uintmax_t{16} << 30;
 
-constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '2'};
+// Layout (docs/mpm.md, "Checkpoints"): magic, scene text, material records, particle arrays, run
+// fields, then the FNV-1a checksum of everything before it.
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '3'};
+constexpr std::size_t checksum_bytes = sizeof(std::uint64_t);
 
 struct Writer {
   std::string out;
@@ -22,6 +26,7 @@ struct Writer {
     static_assert(std::is_trivially_copyable<T>::value, "plain data only");
     out.append(reinterpret_cast<const char*>(&v), sizeof v);
   }
+  void flag(const bool& v) { pod<std::uint8_t>(v ? 1 : 0); }
   template <class T>
   void vec(const std::vector<T>& v) {
     pod<std::uint64_t>(v.size());
@@ -33,12 +38,17 @@ struct Writer {
   }
 };
 
+// Every refusal is the user's bad input (exit 2): a damaged file, or one of another run.
 struct Reader {
   const std::string& in;
-  std::size_t at = 0;
+  std::size_t end;  // where the checksum starts
   std::string file;
+  std::size_t at = sizeof magic;
+  [[noreturn]] void refuse(const std::string& why) const {
+    throw common::InputError("--resume: the checkpoint '" + file + "' " + why);
+  }
   void need(std::size_t n) {
-    if (at + n > in.size()) throw SimulationError("checkpoint '" + file + "' is truncated");
+    if (n > end - at) refuse("is truncated");
   }
   template <class T>
   void pod(T& v) {
@@ -46,11 +56,17 @@ struct Reader {
     std::memcpy(&v, in.data() + at, sizeof v);
     at += sizeof v;
   }
+  void flag(bool& v) {  // a byte other than 0 or 1 is no bool: reading it as one is undefined
+    std::uint8_t b = 0;
+    pod(b);
+    if (b > 1) refuse("holds a flag that is neither 0 nor 1");
+    v = b == 1;
+  }
   template <class T>
   void vec(std::vector<T>& v) {
     std::uint64_t n = 0;
     pod(n);
-    if (n > (in.size() - at) / sizeof(T)) throw SimulationError("checkpoint '" + file + "' is truncated");
+    if (n > (end - at) / sizeof(T)) refuse("is truncated");
     v.resize(n);
     if (n > 0) std::memcpy(v.data(), in.data() + at, n * sizeof(T));  // data() may be null when empty
     at += n * sizeof(T);
@@ -83,7 +99,7 @@ void run_fields(IO& io, C& clock, M& motion, State& st) {
   io.pod(motion.dx);
   io.pod(motion.dy);
   io.pod(motion.work);
-  io.pod(motion.unloading);
+  io.flag(motion.unloading);
   io.vec(st.history);
   io.vec(st.every_step);
   io.pod(st.sum_V);
@@ -99,15 +115,80 @@ void run_fields(IO& io, C& clock, M& motion, State& st) {
   for (auto* v : {&st.peak.x, &st.peak.y, &st.peak.shear_strain, &st.peak.displacement}) io.vec(*v);
 }
 
+bool all_finite(const std::vector<double>& v) {
+  for (const double x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+
+bool record_finite(const LoadRecord& r) {
+  for (const double x : {r.time, r.settlement, r.S_over_B, r.V_kN_per_m, r.H_kN_per_m, r.M_kNm_per_m, r.q_kPa,
+                         r.penetration_m, r.kinetic_J_per_m, r.footing_work_J_per_m})
+    if (!std::isfinite(x)) return false;
+  return r.step >= 0;
+}
+
+// What the checksum cannot promise for a file that was written so (a bug, or made by hand): every
+// number a run goes on with is finite and in its range, every index points into its array.
+void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, const Particles& P, const Clock& clock,
+                    const Footing::Motion& motion, const RunState& st) {
+  if (clock.step < 0 || !std::isfinite(clock.time) || clock.time < 0 || !std::isfinite(clock.dt) || clock.dt < 0)
+    r.refuse("holds an impossible clock (step " + std::to_string(clock.step) + ", time " + std::to_string(clock.time) + ")");
+  if (!std::isfinite(motion.dx) || !std::isfinite(motion.dy) || !std::isfinite(motion.work))
+    r.refuse("holds a non-finite footing motion");
+  particle_arrays(P, [&](const auto& v) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::vector<double>>)
+      if (!all_finite(v)) r.refuse("holds a non-finite particle value");
+  });
+  const Grid& g = sim.grid();
+  const double x_max = g.x0 + (g.nx - 1) * g.h, y_max = g.y0 + (g.ny - 1) * g.h;
+  for (std::size_t p = 0; p < P.n; ++p) {
+    if (P.material[p] < 0 || static_cast<std::size_t>(P.material[p]) >= sim.materials().size())
+      r.refuse("gives particle " + std::to_string(p) + " a material index out of range");
+    if (!(P.mass[p] > 0 && P.volume_initial[p] > 0 && P.density[p] > 0 && P.volume(p) > 0))
+      r.refuse("gives particle " + std::to_string(p) + " a mass, density or volume that is not positive");
+    if (P.x[p] < g.x0 || P.x[p] > x_max || P.y[p] < g.y0 || P.y[p] > y_max)
+      r.refuse("puts particle " + std::to_string(p) + " off the grid");
+  }
+  for (const auto* records : {&st.history, &st.every_step})
+    for (const LoadRecord& rec : *records)
+      if (!record_finite(rec)) r.refuse("holds an impossible load record");
+  if (!std::isfinite(st.sum_V) || !std::isfinite(st.sum_H) || !std::isfinite(st.sum_M) ||
+      !std::isfinite(st.max_penetration) || st.period_steps < 0)
+    r.refuse("holds an impossible running sum");
+  if (st.vtk_frames < 0 || static_cast<std::size_t>(st.vtk_frames) != st.vtk_times.size() || !all_finite(st.vtk_times))
+    r.refuse("holds an impossible frame count");
+  if (st.contours_done.size() != scene.output.contours_at_S_over_B.size())
+    r.refuse("holds a contour list of the wrong length");
+  for (const int done : st.contours_done)
+    if (done != 0 && done != 1) r.refuse("holds a contour flag that is neither 0 nor 1");
+  const std::size_t m = st.peak.x.size();
+  if ((m != 0 && m != P.n) || st.peak.y.size() != m || st.peak.shear_strain.size() != m ||
+      st.peak.displacement.size() != m)
+    r.refuse("holds a peak snapshot of the wrong size");
+  if (!std::isfinite(st.peak.S_over_B) || !std::isfinite(st.peak.V_kN_per_m))
+    r.refuse("holds a non-finite peak");
+  for (const auto* v : {&st.peak.x, &st.peak.y, &st.peak.shear_strain, &st.peak.displacement})
+    if (!all_finite(*v)) r.refuse("holds a non-finite peak snapshot");
+}
+
 }  // namespace
 
 void write_checkpoint(const std::string& path, const Scene& scene, const Simulation& sim, const RunState& state) {
   Writer w;
   w.out.append(magic, sizeof magic);
   w.str(scene.text);
+  // The scene names its material files; their parameters are recorded, so that a resume after
+  // one of them was edited is refused instead of mixing two materials in one run.
+  w.pod<std::uint64_t>(scene.materials.size());
+  for (const MaterialSpec& m : scene.materials) {
+    w.str(m.name);
+    w.str(m.json_text);
+  }
   w.pod<std::uint64_t>(sim.particles().n);
   particle_arrays(sim.particles(), [&](const auto& v) { w.vec(v); });
   run_fields(w, sim.clock(), sim.footing().motion(), state);
+  w.pod<std::uint64_t>(common::fnv1a64(w.out));
   acst::common::write_file_atomically(path, w.out);
 }
 
@@ -118,27 +199,43 @@ void read_checkpoint(const std::string& path, const Scene& scene, Simulation& si
     // inputs; its own cap only stops a file that cannot be one (the reader checks the rest).
     data = common::read_input_file(path, max_checkpoint_bytes);
   } catch (const common::InputError& e) {
-    throw common::InputError(std::string("--resume: cannot read the checkpoint: ") + e.what());  // the user's bad input: exit 2
+    throw common::InputError(std::string("--resume: cannot read the checkpoint: ") + e.what());
   }
   Reader r{data, 0, path};
-  r.need(sizeof magic);
-  if (std::memcmp(data.data(), magic, sizeof magic) != 0) throw SimulationError("'" + path + "' is not an acst_mpm checkpoint");
-  r.at = sizeof magic;
-  if (r.str() != scene.text) throw SimulationError("checkpoint '" + path + "' was written for a different scene");
+  if (data.size() < sizeof magic || std::memcmp(data.data(), magic, sizeof magic - 1) != 0)
+    r.refuse("is not an acst_mpm checkpoint");
+  if (data[sizeof magic - 1] != magic[sizeof magic - 1])
+    r.refuse("was written by another version of acst_mpm (format " + std::string(1, data[sizeof magic - 1]) +
+             ", this one reads " + magic[sizeof magic - 1] + "): run the scene again");
+  if (data.size() < sizeof magic + checksum_bytes) r.refuse("is truncated");
+  r.end = data.size() - checksum_bytes;
+  std::uint64_t stored = 0;
+  std::memcpy(&stored, data.data() + r.end, checksum_bytes);
+  if (stored != common::fnv1a64(std::string_view(data.data(), r.end)))
+    r.refuse("is damaged (its checksum does not match): it was cut, changed or not written completely");
+  if (r.str() != scene.text) r.refuse("was written for a different scene");
+  std::uint64_t materials = 0;
+  r.pod(materials);
+  if (materials != scene.materials.size()) r.refuse("was written with another list of materials");
+  for (const MaterialSpec& m : scene.materials)
+    if (r.str() != m.name || r.str() != m.json_text)
+      r.refuse("was written with other parameters for material '" + m.name +
+               "' (its file was changed since): run the scene again");
   std::uint64_t n = 0;
   r.pod(n);
-  if (n != sim.particles().n) throw SimulationError("checkpoint '" + path + "' holds a different number of particles");
+  if (n != sim.particles().n) r.refuse("holds a different number of particles");
   Particles P = sim.particles();
   particle_arrays(P, [&](auto& v) {
     const std::size_t expected = v.size();
     r.vec(v);
-    if (v.size() != expected) throw SimulationError("checkpoint '" + path + "' has an array of the wrong size");
+    if (v.size() != expected) r.refuse("has an array of the wrong size");
   });
   RunState st;
   Clock clock;
   Footing::Motion motion;
   run_fields(r, clock, motion, st);
-  if (r.at != data.size()) throw SimulationError("checkpoint '" + path + "' has trailing data");
+  if (r.at != r.end) r.refuse("has trailing data");
+  check_restored(r, scene, sim, P, clock, motion, st);
   sim.restore(std::move(P), clock, motion);
   state = std::move(st);
 }

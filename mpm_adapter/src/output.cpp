@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 #include <sstream>
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
 #include "acst_common/one_line.hpp"
+#include "acst_common/result_folder.hpp"
 #include "acst_mpm/fields.hpp"
 
 namespace acst::mpm {
@@ -30,6 +32,13 @@ void scalar_array(std::string& out, const char* name, const std::vector<double>&
 }
 
 }  // namespace
+
+bool is_run_output_name(const std::string& name) {
+  static const std::regex own(
+      R"((load_settlement(\.partial|\.failed)?\.(csv|png|gp)|particles(_[0-9]+\.vtp|\.pvd)|summary\.json|)"
+      R"(checkpoint\.bin|failure_reproducer\.json|(shear_strain|displacement)_[A-Za-z0-9._-]+\.(png|gp|csv)))");
+  return std::regex_match(name, own) || common::is_temporary_name(name);
+}
 
 std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history) {
   std::string out = "# acst_mpm load-settlement record of scene '" + common::one_line(scene.name) + "'\n";

@@ -11,6 +11,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
 #include "acst_common/progress.hpp"
+#include "acst_common/result_folder.hpp"
 #include "acst_mpm/checkpoint.hpp"
 #include "acst_mpm/fields.hpp"
 #include "acst_mpm/output.hpp"
@@ -34,7 +35,15 @@ class Run {
   }
 
   RunSummary run() {
-    fs::create_directories(opt_.output_dir);
+    // A resumed run goes on in its own folder; a new one never mixes its files with another's.
+    if (opt_.resume_from.empty()) {
+      const std::size_t moved = common::set_aside_earlier_run(opt_.output_dir, is_run_output_name);
+      if (moved > 0 && !opt_.quiet)
+        std::cerr << "acst_mpm: moved the " << moved << " files of the earlier run in '" << opt_.output_dir
+                  << "' into its subfolder '" << common::previous_run_folder << "'\n";
+    } else {
+      fs::create_directories(opt_.output_dir);
+    }
     const auto start = Clock::now();
     auto last_checkpoint = start;
     const long long first_step = sim_.step_count();

@@ -75,7 +75,7 @@ struct FitSpec {
   std::map<std::string, double> type_weights;   // normalised to sum to one over the types used
   double stress_axis_weight = 0.5, volumetric_axis_weight = 0.5;  // normalised to sum to one
   OptimizerSettings optimizer;
-  std::string output_dir = "results/calibration";
+  std::string output_dir;  // output.directory; default results/calibration/NAME (one result set per folder)
   std::string reference_group;  // whose per-group values go into the main parameter file
 };
 

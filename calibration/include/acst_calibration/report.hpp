@@ -45,8 +45,14 @@ nlohmann::json report_json(const Problem& problem, const FitResult& fit, const s
                            const RunInfo& info);
 std::string report_markdown(const nlohmann::json& report);
 
-// Writes every output into `directory` (created if needed): first into a scratch folder, then
-// moved into place file by file, so that a failure never leaves half a result over a good one.
+// Whether `entry` (a name in the output folder) is part of a result set of the fit `fit_name`:
+// what write_outputs writes, and nothing else may be in the folder it replaces.
+bool is_fit_output_name(const std::string& fit_name, const std::string& entry);
+
+// Writes the result set into a new folder beside `directory`, then puts it in the place of
+// `directory` as a whole (common::publish_folder): the folder holds the whole earlier set or the
+// whole new one, never a mixture, and a failure leaves the earlier set as it was. The folder may
+// only hold an earlier result of the same fit (checked first by the tool, see is_fit_output_name).
 // Returns warnings (gnuplot missing or failed); throws std::runtime_error when a file cannot be written.
 std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit,
                                        const std::vector<SimulationOutcome>& outcomes, const RunInfo& info,

@@ -9,6 +9,10 @@
 
 namespace acst::mpm {
 
+// Whether `name` is a file a run writes into its output folder (the list in docs/mpm.md), so that
+// a new run may set it aside with the rest of an earlier run.
+bool is_run_output_name(const std::string& name);
+
 std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history);
 std::string vtp_text(const Simulation& sim);
 std::string pvd_text(const std::string& stem, const std::vector<double>& times);

@@ -1,0 +1,36 @@
+#pragma once
+// Output folders that never hold the files of two runs at once.
+#include <cstddef>
+#include <functional>
+#include <string>
+
+namespace acst::common {
+
+// Name of the subfolder that keeps the files of the run before the last.
+inline constexpr const char* previous_run_folder = "previous";
+
+// Makes `dir` ready for a new run of a tool that writes its files there one by one: creates it
+// when missing; when it holds an earlier run (every entry but the `previous` folder passes
+// `is_own`), moves those files into dir/previous, replacing what an older run left there, and
+// returns how many it moved. A folder holding anything else is refused (InputError naming the
+// entry), so no file of the user's is ever moved or overwritten. Interrupted at any point, every
+// file is still in dir, in dir/previous or in dir/previous.new, which the next call finishes.
+std::size_t set_aside_earlier_run(const std::string& dir, const std::function<bool(const std::string&)>& is_own);
+
+// For a tool that publishes its result set as a whole folder: refuses (InputError naming the
+// entry) a `dir` that exists and holds an entry `is_own` refuses, before any work is done.
+void require_own_folder(const std::string& dir, const std::function<bool(const std::string&)>& is_own);
+
+// A hidden folder beside `dir`, unique to this process, to build the new result set in.
+std::string staging_folder_for(const std::string& dir);
+
+// Puts the folder `staging` in the place of `dir` in one step, so that `dir` holds the whole
+// earlier result set or the whole new one at every moment (an atomic exchange, renameat2
+// RENAME_EXCHANGE, where the file system has it; else two renames, between which `dir` is
+// briefly absent, never mixed); then removes the earlier set. Throws std::runtime_error.
+void publish_folder(const std::string& staging, const std::string& dir);
+
+// Whether `name` is a temporary file of write_file_atomically (see temporary_name).
+bool is_temporary_name(const std::string& name);
+
+}  // namespace acst::common
