@@ -159,4 +159,27 @@ TEST(LoadingDirection, SmallStressRatioFallsBackToUnitDeviatoricStrainIncrement)
   EXPECT_EQ(tensor_norm(none.n), 0.0);
 }
 
+// The cheap yield value of every elastic trial (acst::yield_value, written without tensor
+// divisions) equals f = R/g - H from the definitions, for random stresses with |sin3theta| > 0.05
+// (where the reference g of the notes is well conditioned) and also for p < 0, where r = s/p
+// turns r_hat around.
+TEST(YieldValue, EqualsTheDefinitionForRandomStresses) {
+  std::mt19937 rng(20261124);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int checked = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double p = (k % 10 == 0 ? -1.0 : 1.0) * std::exp(6.0 * std::abs(u(rng)));
+    Sym sigma;
+    for (int i = 0; i < 6; ++i) sigma[i] = 0.6 * std::abs(p) * u(rng);
+    sigma.head<3>().array() += p - (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+    const Eigen::Matrix3d m = matrix(sigma);
+    if (std::abs(sin3theta_of((m - p * Eigen::Matrix3d::Identity()) / p)) < 0.05) continue;
+    const double H = 0.3;
+    const double reference = yield(sigma, H);
+    EXPECT_NEAR(acst::yield_value(sigma, c, R_tolerance, H), reference, 1e-13 * (1.0 + std::abs(reference))) << k;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1500);
+}
+
 }  // namespace

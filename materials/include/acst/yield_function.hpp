@@ -32,23 +32,27 @@ struct StressRatioState {
 inline double yield_function(double R, double g, double H) { return R / g - H; }
 
 // f = R/g(theta) - H from the stress alone, without the loading direction (the cheap check of
-// every elastic trial).
+// every elastic trial). With d = dev(sigma): R = sqrt(3/2) |d|/|p| and r_hat = sign(p) d/|d|, so
+// sin 3theta = sign(p) (-3 sqrt(6) det(d) / |d|^3) needs no tensor division (bench/RESULTS.md 1).
 inline double yield_value(const Sym& sigma, double c, double R_tolerance, double H) {
-  const Sym r = deviator(sigma) / mean_stress(sigma);
-  const double r_norm = norm(r);
-  const double R = std::sqrt(1.5) * r_norm;
+  const double p = mean_stress(sigma);
+  const Sym d = deviator(sigma);
+  const double d_norm = norm(d);
+  const double R = std::sqrt(1.5) * d_norm / std::abs(p);
   if (R < R_tolerance) return yield_function(R, lode_interpolation(c, 0.0).g, H);
-  const double s = std::clamp(lode_sin3theta_unclamped(r / r_norm), -1.0, 1.0);
-  return yield_function(R, lode_interpolation(c, s).g, H);
+  const double inv_norm = 1.0 / d_norm;
+  const double s_raw = std::copysign(1.0, p) * (-3.0 * std::sqrt(6.0)) * determinant(d) * (inv_norm * inv_norm * inv_norm);
+  return yield_function(R, lode_interpolation(c, std::clamp(s_raw, -1.0, 1.0)).g, H);
 }
 
 // n = dev(N)/|dev(N)| with dev(N) = [sqrt(3/2)(g + 3 s g') r_hat + 9 g' (r_hat^2 - I/3)] / g^2,
 // N = d(R/g)/dr, s = sin 3theta. Below R_tolerance, n is the unit deviatoric part of
 // `fallback_direction` (the strain increment) and g is g(s = 0); n = 0 if that is zero too.
 inline StressRatioState stress_ratio_state(const Sym& sigma, double c, double R_tolerance, const Sym& fallback_direction) {
+  // Reciprocals computed once and multiplied: a tensor divided by a scalar is six divisions in a
+  // serial chain of them, the cost of this function (bench/RESULTS.md section 1, proposal 4).
   StressRatioState st;
-  const double p = mean_stress(sigma);
-  st.r = deviator(sigma) / p;
+  st.r = deviator(sigma) * (1.0 / mean_stress(sigma));
   const double r_norm = norm(st.r);
   st.R = std::sqrt(1.5) * r_norm;
   st.small_R = st.R < R_tolerance;
@@ -62,16 +66,16 @@ inline StressRatioState stress_ratio_state(const Sym& sigma, double c, double R_
     st.dev_N_norm = std::sqrt(1.5) / st.lode.g;
     return st;
   }
-  const Sym r_hat = st.r / r_norm;
+  const Sym r_hat = st.r * (1.0 / r_norm);
   const double s_raw = lode_sin3theta_unclamped(r_hat);
   st.lode_clamped = std::abs(s_raw) > 1.0 + 1e-10;
   st.sin3theta = std::clamp(s_raw, -1.0, 1.0);
   st.lode = lode_interpolation(c, st.sin3theta);
   const double g = st.lode.g, dg = st.lode.dg_ds;
   Sym devN = std::sqrt(1.5) * (g + 3.0 * st.sin3theta * dg) * r_hat + 9.0 * dg * deviator(square(r_hat));
-  devN /= g * g;
+  devN *= 1.0 / (g * g);
   st.dev_N_norm = norm(devN);
-  st.n = devN / st.dev_N_norm;
+  st.n = devN * (1.0 / st.dev_N_norm);
   return st;
 }
 
