@@ -3,6 +3,7 @@
 // increment, yield value, error norm and drift correction (docs/model.md section 7).
 #include <Eigen/Core>
 #include <cmath>
+#include <limits>
 
 #include "acst/critical_state.hpp"
 #include "acst/dilatancy.hpp"
@@ -31,11 +32,12 @@ struct PlasticQuantities {
   double n_r;    // n:r
 };
 
+// With the stress ratio state of sigma already at hand (see AcstRates::ratio_state).
 inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
-                                            const Sym& strain_direction) {
+                                            const StressRatioState& ratio) {
   PlasticQuantities q;
   q.p = mean_stress(sigma);
-  q.ratio = stress_ratio_state(sigma, prm.c, prm.R_tolerance, strain_direction);
+  q.ratio = ratio;
   const double g = q.ratio.lode.g;
   q.moduli = elastic_moduli(prm, e, q.p);
   q.psi = state_parameter(prm, e, q.p);
@@ -49,6 +51,11 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   q.Kp = plastic_modulus(q.moduli.G, q.h, prm.Mc, g, prm.n, q.zeta, R);
   q.n_r = contract(q.ratio.n, q.ratio.r);
   return q;
+}
+
+inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
+                                            const Sym& strain_direction) {
+  return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, prm.c, prm.R_tolerance, strain_direction));
 }
 
 // D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I) = 2G n + sqrt(2/3) K D I: the stress relaxed per
@@ -70,6 +77,7 @@ class AcstRates {
   using Reason = integration::Reason;
   using Counters = integration::Counters;
 
+  // One object per update (never shared between threads): it keeps the last stress ratio state.
   explicit AcstRates(const Parameters& prm) : prm_(prm) {}
 
   static Sym stress(const Vector& y) { return y.template head<6>(); }
@@ -93,7 +101,7 @@ class AcstRates {
       ++c.guard_pressure_floor;
       return Reason::pressure_floor;
     }
-    const PlasticQuantities q = plastic_quantities(prm_, sigma, F, e, deps);
+    const PlasticQuantities q = plastic_quantities(prm_, sigma, F, e, ratio_state(sigma, deps));
     count_guards(q, c);
     const LoadingIndexTerms L = loading_index_terms(q.moduli.G, q.moduli.K, q.Kp, q.D, q.ratio.n, q.n_r, deps);
     if (!(L.denominator > 0.0)) {
@@ -116,8 +124,7 @@ class AcstRates {
   // Cosine between df/dsigma at y and the elastic trial stress increment.
   double unloading_cosine(const Vector& y, const Vector& elastic_dy, const Sym& deps) const {
     const Sym sigma = stress(y);
-    const StressRatioState st = stress_ratio_state(sigma, prm_.c, prm_.R_tolerance, deps);
-    const Sym grad = yield_gradient(st, mean_stress(sigma));
+    const Sym grad = yield_gradient(ratio_state(sigma, deps), mean_stress(sigma));
     const Sym dsig = elastic_dy.template head<6>();
     const double den = norm(grad) * norm(dsig);
     return den > 0.0 ? contract(grad, dsig) / den : 0.0;
@@ -147,6 +154,21 @@ class AcstRates {
 
  private:
   const Parameters& prm_;
+  // The start state's stress ratio state is wanted twice in a plastic update, by the unloading
+  // test of the elastic fraction and by the first rate (bench/RESULTS.md section 1, proposal 2):
+  // the last one is kept with the stress and strain direction it was computed for.
+  mutable StressRatioState last_ratio_{};
+  mutable Sym last_sigma_ = Sym::Constant(std::numeric_limits<double>::quiet_NaN());  // NaN: equal to nothing
+  mutable Sym last_direction_ = Sym::Zero();
+
+  const StressRatioState& ratio_state(const Sym& sigma, const Sym& strain_direction) const {
+    if (sigma != last_sigma_ || strain_direction != last_direction_) {
+      last_ratio_ = stress_ratio_state(sigma, prm_.c, prm_.R_tolerance, strain_direction);
+      last_sigma_ = sigma;
+      last_direction_ = strain_direction;
+    }
+    return last_ratio_;
+  }
 
   static void count_guards(const PlasticQuantities& q, Counters& c) {
     c.guard_small_R += q.ratio.small_R;
