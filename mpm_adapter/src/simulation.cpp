@@ -185,13 +185,16 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   std::vector<long long> failed(T, -1);
   std::vector<std::string> messages(T), reproducers(T);
   parallel_for(T, P.n, [&](int t, std::size_t p) {
-    double L[4] = {0, 0, 0, 0};  // L_ij = dv_i/dx_j: xx xy yx yy
+    // Summed in locals: the array's address goes to the material below, and summing into it
+    // made the compiler store it on every node of the stencil (bench/RESULTS.md 1g).
+    double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
     w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
-      L[0] += vx[i] * gx;
-      L[1] += vx[i] * gy;
-      L[2] += vy[i] * gx;
-      L[3] += vy[i] * gy;
+      Lxx += vx[i] * gx;
+      Lxy += vx[i] * gy;
+      Lyx += vy[i] * gx;
+      Lyy += vy[i] * gy;
     });
+    const double L[4] = {Lxx, Lxy, Lyx, Lyy};  // L_ij = dv_i/dx_j: xx xy yx yy
     double* F = &P.F[4 * p];
     const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
     F[0] += dt_half * (L[0] * F0 + L[1] * F2);

@@ -7,39 +7,38 @@
 
 namespace acst::mpm {
 
-// 1-D weight S(xi) (docs/mpm.md, section "Shape functions"; mpm-core design note table).
-inline double b2gimp_weight(double xi, double l) {
-  const double a = std::fabs(xi);
-  if (a < 0.5 - l) return 0.75 - a * a - l * l / 3.0;
-  if (a < 0.5 + l) {
-    const double b = a - l, c = 1.5 - a - l;
-    return (0.5 - 0.75 * b + b * b * b / 3.0 - c * c * c / 6.0) / (2.0 * l);
-  }
-  if (a <= 1.5 - l) return 0.5 * (1.5 - a) * (1.5 - a) + l * l / 6.0;
-  if (a < 1.5 + l) {
-    const double c = 1.5 + l - a;
-    return c * c * c / (12.0 * l);
-  }
-  return 0.0;
-}
+// 1-D weight S(xi) and slope dS/dxi together, in one pass over the ranges, with inv_l = 1/l
+// (docs/mpm.md, section "Shape functions"; mpm-core design note table). One function for both
+// keeps the ranges written once; the particle loops call it 8 times per particle and step.
+struct B2gimpValue {
+  double w, dw;
+};
 
-// dS/dxi.
-inline double b2gimp_slope(double xi, double l) {
-  const double a = std::fabs(xi), sign = xi < 0.0 ? -1.0 : 1.0;
-  double d = 0.0;
+inline B2gimpValue b2gimp(double xi, double l, double inv_l) {
+  const double a = std::fabs(xi);
+  double w = 0.0, d = 0.0;
   if (a < 0.5 - l) {
+    w = 0.75 - a * a - l * l / 3.0;
     d = -2.0 * a;
   } else if (a < 0.5 + l) {
     const double b = a - l, c = 1.5 - a - l;
-    d = (0.5 * c * c - (0.75 - b * b)) / (2.0 * l);
+    w = (0.5 - 0.75 * b + b * b * b / 3.0 - c * c * c / 6.0) * (0.5 * inv_l);
+    d = (0.5 * c * c - (0.75 - b * b)) * (0.5 * inv_l);
   } else if (a <= 1.5 - l) {
+    w = 0.5 * (1.5 - a) * (1.5 - a) + l * l / 6.0;
     d = a - 1.5;
   } else if (a < 1.5 + l) {
     const double c = 1.5 + l - a;
-    d = -c * c / (4.0 * l);
+    w = c * c * c * (inv_l / 12.0);
+    d = -c * c * (0.25 * inv_l);
   }
-  return sign * d;
+  return {w, xi < 0.0 ? -d : d};
 }
+
+inline double b2gimp_weight(double xi, double l) { return b2gimp(xi, l, 1.0 / l).w; }
+
+// dS/dxi.
+inline double b2gimp_slope(double xi, double l) { return b2gimp(xi, l, 1.0 / l).dw; }
 
 // The 4 nodes along one axis that can carry weight for a particle at X = (x - x_origin)/h
 // (support half-width 1.5 + l <= 2 cells): nodes first .. first + 3.
@@ -52,10 +51,11 @@ struct AxisWeights {
 inline AxisWeights axis_weights(double X, double l) {
   AxisWeights a;
   a.first = static_cast<int>(std::floor(X)) - 1;
+  const double inv_l = 1.0 / l;
   for (int k = 0; k < 4; ++k) {
-    const double xi = X - (a.first + k);
-    a.w[k] = b2gimp_weight(xi, l);
-    a.dw[k] = b2gimp_slope(xi, l);
+    const B2gimpValue v = b2gimp(X - (a.first + k), l, inv_l);
+    a.w[k] = v.w;
+    a.dw[k] = v.dw;
   }
   return a;
 }
