@@ -220,3 +220,46 @@ TEST(FootingContact, RoughFootingDragsTheSoilBeyondThatFriction) {
   const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.05; });
   EXPECT_GT(rows.back().H, 0.3 * rows.back().V) << "no slip while pressed";
 }
+
+// Which face pushes a particle (Footing::contact on single particles, against the footing's
+// outline): under the base the base pushes down, beside it the side pushes out; a centre inside
+// the outline (soil that came in past a side face) leaves through the face its domain penetrates
+// least, with that depth, instead of being pushed down by its whole height above the base
+// (which threw such particles off the grid in slow Kimura runs).
+TEST(FootingContact, EachParticleLeavesThroughTheFaceItPenetratesLeast) {
+  Footing::Spec spec;
+  spec.centre_x = 1.0;
+  spec.width = 1.0;  // faces at x = 0.5 and 1.5
+  spec.base_y = 2.0;
+  spec.interface = FootingInterface::smooth;
+  const Footing f(spec);
+  const auto push = [&](double x, double y) {
+    double friction = 0.0;
+    return f.contact(ContactParticle{x, y, 0.0, 0.0, 0.05, 0.05, 1.0, 1e6}, friction, 1e-4);
+  };
+  const ContactForce below = push(1.0, 1.97);  // under the base, 0.02 into it
+  EXPECT_NEAR(below.penetration, 0.02, 1e-12);
+  EXPECT_EQ(below.fx, 0.0);
+  EXPECT_LT(below.fy, 0.0);
+  const ContactForce side = push(1.53, 2.3);  // beside the right face, 0.02 into it
+  EXPECT_NEAR(side.penetration, 0.02, 1e-12);
+  EXPECT_GT(side.fx, 0.0);
+  EXPECT_EQ(side.fy, 0.0);
+  const ContactForce inside = push(1.47, 2.3);  // wholly inside, 0.08 from the right face
+  EXPECT_NEAR(inside.penetration, 0.08, 1e-12) << "not its 0.35 above the base";
+  EXPECT_GT(inside.fx, 0.0) << "out through the right face";
+  EXPECT_EQ(inside.fy, 0.0);
+  const ContactForce left_inside = push(0.6, 2.3);  // nearer the left face
+  EXPECT_NEAR(left_inside.penetration, 0.15, 1e-12);
+  EXPECT_LT(left_inside.fx, 0.0);
+  const ContactForce passed = push(1.0, 2.03);  // centre passed by the base, domain still across it
+  EXPECT_NEAR(passed.penetration, 0.08, 1e-12);
+  EXPECT_LT(passed.fy, 0.0) << "soil under the footing is pushed down";
+  EXPECT_EQ(passed.fx, 0.0);
+  const ContactForce corner = push(1.49, 2.02);  // centre just inside the corner: 0.06 from the side, 0.07 from the base
+  EXPECT_NEAR(corner.penetration, 0.06, 1e-12);
+  EXPECT_GT(corner.fx, 0.0);
+  const ContactForce corner_below = push(1.52, 1.99);  // centre below the base beside it: 0.03 from the side, 0.04 from the base
+  EXPECT_NEAR(corner_below.penetration, 0.03, 1e-12);
+  EXPECT_GT(corner_below.fx, 0.0);
+}

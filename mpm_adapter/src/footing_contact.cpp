@@ -16,13 +16,18 @@ ContactForce Footing::contact(const ContactParticle& p, double& friction, double
     return out;
   }
   // The face that pushes is the one the particle's centre lies beyond: the base for a centre
-  // under the footprint (even one the base has passed: soil under the footing is pushed down,
-  // never out sideways), a side for a centre above the base beside the footing, and below the
-  // base beside it (the corner) the face it penetrates least.
+  // under the base, a side for a centre above the base beside the footing; for a centre inside
+  // the footing's outline, and below the base beside it (the corners), the face the domain
+  // penetrates least, as a signed distance to the outline gives. Under the middle of the base
+  // that is the base (soil the base has passed is pushed down); near a side it is the side:
+  // heaved soil that a side let in, pushed down instead, counted its height above the base as
+  // penetration and the force threw it off the grid (issue 11, the slow Kimura runs).
   const double d_base = y1 - base, d_left = x1 - left, d_right = right - x0;
   const bool under = p.x >= left && p.x <= right;
-  const bool beside = !under && p.y >= base;
-  const bool base_face = under || (!beside && d_base <= std::min(d_left, d_right));
+  const bool above_base = p.y >= base;
+  bool base_face = d_base <= std::min(d_left, d_right);  // inside the outline, or a corner below
+  if (under && !above_base) base_face = true;             // under the base
+  if (!under && above_base) base_face = false;            // beside
   double nx = 0.0, ny = -1.0, depth = d_base, length = 0.0;
   if (base_face) {
     const double a = std::max(x0, left), b = std::min(x1, right);
@@ -30,7 +35,7 @@ ContactForce Footing::contact(const ContactParticle& p, double& friction, double
     out.at_x = 0.5 * (a + b);
     out.at_y = base;
   } else {
-    nx = p.x < left ? -1.0 : 1.0;
+    nx = d_left <= d_right ? -1.0 : 1.0;  // beside: the near side; inside: the nearer side
     ny = 0.0;
     depth = nx < 0.0 ? d_left : d_right;
     const double a = std::max(y0, base);

@@ -6,7 +6,8 @@
 // Two formulations (docs/mpm.md, "The footing"):
 // - penalty contact (the default): the footing is the half-plane body {|x - c| <= B/2, y >= base};
 //   every particle whose domain overlaps it is pushed out through the face its centre lies
-//   beyond (the base for a centre under the footprint) by a force k_n * depth * (contact
+//   beyond (the base for a centre under the base; for a centre inside the outline or at a
+//   corner, the face the domain penetrates least) by a force k_n * depth * (contact
 //   length), k_n = factor * M / h with M the particle's own constrained modulus (a contact layer
 //   as stiff as h / factor of that soil), and a dashpot (half critical) on the approach speed
 //   (never pulling), with friction on the base (rough: no slip while pressed;
