@@ -1,8 +1,28 @@
 #include "acst/integration/options.hpp"
+
+#include <string>
+
 #include "acst/integration/report.hpp"
 #include "acst/parameters.hpp"
 
 namespace acst::integration {
+
+std::string options_problem(const Options& o) {
+  const auto fraction = [](const char* name, double v, bool one_allowed) {
+    if (v > 0.0 && (v < 1.0 || (one_allowed && v == 1.0))) return std::string();
+    return std::string(name) + " = " + std::to_string(v) + ": allowed range (0, 1" + (one_allowed ? "]" : ")");
+  };
+  const auto count = [](const char* name, int v) {
+    return v >= 1 && v <= 100000000 ? std::string()
+                                     : std::string(name) + " = " + std::to_string(v) + ": allowed range [1, 100000000]";
+  };
+  for (const std::string& m : {fraction("stol", o.stol, true), fraction("ftol", o.ftol, true), fraction("ltol", o.ltol, true),
+                               fraction("min_substep", o.min_substep, false), count("max_substeps", o.max_substeps),
+                               count("fe_substeps", o.fe_substeps), count("unload_scan_intervals", o.unload_scan_intervals),
+                               count("crossing_max_iterations", o.crossing_max_iterations)})
+    if (!m.empty()) return m;
+  return "";
+}
 
 const char* scheme_name(Scheme s) {
   switch (s) {
@@ -38,6 +58,7 @@ const char* reason_text(Reason r) {
     case Reason::substep_too_small: return "substep fell below the minimum size";
     case Reason::too_many_substeps: return "more substeps than allowed";
     case Reason::non_finite: return "non-finite value (NaN or inf)";
+    case Reason::void_ratio_range: return "void ratio left its range (0, 2.97)";
   }
   return "?";
 }

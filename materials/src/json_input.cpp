@@ -93,26 +93,23 @@ integration::Options options_from_json(const json& j, const std::string& path) {
       throw InputError(path + "/scheme: " + e.what());
     }
   }
-  auto positive = [&](const char* key, double& slot, double hi) {
-    if (!j.contains(key)) return;
-    const double v = number_at(j, key, path);
-    if (!(v > 0.0 && v < hi))
-      throw InputError(path + "/" + key + " = " + std::to_string(v) + ": allowed range (0, " + std::to_string(hi) + ")");
-    slot = v;
+  auto number = [&](const char* key, double& slot) {
+    if (j.contains(key)) slot = number_at(j, key, path);
   };
-  auto count = [&](const char* key, int& slot, int lo) {
+  // Integers beyond int's range are refused here; options_problem below checks every range.
+  auto count = [&](const char* key, int& slot) {
     if (!j.contains(key)) return;
-    if (!j[key].is_number_integer() || j[key].get<long long>() < lo || j[key].get<long long>() > 100000000)
-      throw InputError(path + "/" + key + ": expected an integer >= " + std::to_string(lo));
+    if (!j[key].is_number_integer() || j[key].get<long long>() < 1 || j[key].get<long long>() > 100000000)
+      throw InputError(path + "/" + key + ": expected an integer in [1, 100000000]");
     slot = j[key].get<int>();
   };
-  positive("stol", o.stol, 1.0);
-  positive("ftol", o.ftol, 1.0);
-  positive("ltol", o.ltol, 1.0);
-  positive("min_substep", o.min_substep, 1.0);
-  count("max_substeps", o.max_substeps, 1);
-  count("fe_substeps", o.fe_substeps, 1);
-  count("unload_scan_intervals", o.unload_scan_intervals, 1);
+  number("stol", o.stol);
+  number("ftol", o.ftol);
+  number("ltol", o.ltol);
+  number("min_substep", o.min_substep);
+  count("max_substeps", o.max_substeps);
+  count("fe_substeps", o.fe_substeps);
+  count("unload_scan_intervals", o.unload_scan_intervals);
   if (j.contains("reuse_last_substep")) {
     if (!j["reuse_last_substep"].is_boolean()) throw InputError(path + "/reuse_last_substep: expected true or false");
     o.reuse_last_substep = j["reuse_last_substep"].get<bool>();
@@ -126,6 +123,8 @@ integration::Options options_from_json(const json& j, const std::string& path) {
     else
       throw InputError(path + "/pressure_floor: expected \"reset\" or \"fail\"");
   }
+  if (const std::string problem = integration::options_problem(o); !problem.empty())
+    throw InputError(path + "/" + problem);
   return o;
 }
 

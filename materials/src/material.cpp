@@ -11,18 +11,16 @@ using integration::Status;
 Material::Material(const Parameters& parameters, const integration::Options& options)
     : parameters_(parameters), options_(options) {
   validate(parameters_);
-  if (!(options_.stol > 0.0) || !(options_.ftol > 0.0) || !(options_.min_substep > 0.0) ||
-      !(options_.min_substep < 1.0) || options_.max_substeps < 1 || options_.fe_substeps < 1)
-    throw InputError("integrator options out of range: need stol > 0, ftol > 0, 0 < min_substep < 1, "
-                     "max_substeps >= 1, fe_substeps >= 1");
+  if (const std::string problem = integration::options_problem(options_); !problem.empty())
+    throw InputError("integrator option " + problem);
 }
 
 State Material::initial_state(const Sym& stress, double void_ratio, const Eigen::Vector3d& deposition_direction) const {
   if (!stress.allFinite()) throw InputError("initial stress is not finite");
   if (!(mean_stress(stress) >= parameters_.p_min))
     throw InputError("initial mean stress must be at least p_min = " + std::to_string(parameters_.p_min) + " kPa");
-  if (!(void_ratio > 0.0 && void_ratio < 2.97)) throw InputError("initial void ratio must lie in (0, 2.97)");
-  if (!deposition_direction.allFinite() || !(deposition_direction.norm() > 0.0))
+  if (!void_ratio_admissible(void_ratio)) throw InputError("initial void ratio must lie in (0, 2.97)");
+  if (!deposition_direction.allFinite() || !(deposition_direction.cwiseAbs().maxCoeff() > 0.0))
     throw InputError("deposition direction must be a finite non-zero vector");
   State s;
   s.stress = stress;
@@ -42,8 +40,8 @@ AcstRates::Vector pack(const State& s) {
 }
 
 bool physical(const State& s) {
-  return s.stress.allFinite() && s.fabric.allFinite() && std::isfinite(s.H) && std::isfinite(s.void_ratio) &&
-         s.void_ratio > 0.0 && s.H >= 0.0;
+  return s.stress.allFinite() && s.fabric.allFinite() && std::isfinite(s.H) && void_ratio_admissible(s.void_ratio) &&
+         s.H >= 0.0;
 }
 
 }  // namespace
@@ -65,13 +63,26 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
   double H = state.H, hint = state.substep_hint;
   rep = integration::ExplicitSubstepping<AcstRates>(model, options_).integrate(y, H, hint, deps);
   if (rep.status != Status::ok) return rep;
-  state.stress = AcstRates::stress(y);
-  state.fabric = AcstRates::fabric(y);
-  state.void_ratio = AcstRates::void_ratio(y);
-  state.H = H;
-  state.substep_hint = hint;
-  state.pressure_floor_resets += rep.counters.pressure_floor_resets;
-  if (tangent_out) *tangent_out = tangent(state, rep.plastic, deps);
+  State next = state;
+  next.stress = AcstRates::stress(y);
+  next.fabric = AcstRates::fabric(y);
+  next.void_ratio = AcstRates::void_ratio(y);
+  next.H = H;
+  next.substep_hint = hint;
+  next.pressure_floor_resets += rep.counters.pressure_floor_resets;
+  // OK promises a finite, physical state and tangent (docs/c-abi.md): anything else asks for a
+  // smaller increment and leaves the state as it came.
+  Mat6 D;
+  if (tangent_out) D = tangent(next, rep.plastic, deps);
+  if (!physical(next) || (tangent_out && !D.allFinite())) {
+    rep.status = Status::step_reduction_requested;
+    rep.reason = void_ratio_admissible(next.void_ratio) ? integration::Reason::non_finite
+                                                        : integration::Reason::void_ratio_range;
+    rep.suggested_step_factor = 0.5;
+    return rep;
+  }
+  state = next;
+  if (tangent_out) *tangent_out = D;
   return rep;
 }
 

@@ -1,6 +1,7 @@
 // The C ABI: thin wrappers that never let an exception escape. What differs between model
 // kinds lives behind ModelKind (one file per kind, registered in model_kinds.cpp).
 #include <Eigen/LU>  // determinant of the rotation
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <memory>
@@ -41,6 +42,11 @@ int state_size_of(const acst_model& model) { return model.kind->state().size; }
 
 #define ACST_REQUIRE(cond, text) \
   if (!(cond)) return make_status(ACST_INVALID_INPUT, text, 1.0)
+
+// The entry check of the functions that read a stress and state without updating them.
+#define ACST_REQUIRE_PHYSICAL(function)                                                               \
+  if (const std::string problem = model->kind->state_problem(stress, statev); !problem.empty()) \
+  return make_status(ACST_NONPHYSICAL_STATE, std::string(function) + ": " + problem, 1.0)
 
 extern "C" {
 
@@ -140,10 +146,13 @@ acst_status acst_wave_speed(double* speed, const acst_model* model, const double
   ACST_REQUIRE(speed && model && stress && (statev || state_size_of(*model) == 0),
                "acst_wave_speed: a pointer argument is NULL");
   ACST_REQUIRE(density > 0.0 && std::isfinite(density), "acst_wave_speed: density must be positive (kg/m^3)");
+  ACST_REQUIRE_PHYSICAL("acst_wave_speed");
   ACST_GUARD({
     const acst::ElasticModuli moduli = model->kind->moduli(stress, statev);
-    *speed = std::sqrt(acst::constrained_modulus(moduli) * 1000.0 / density);  // kPa -> Pa
-    ACST_REQUIRE(std::isfinite(*speed), "acst_wave_speed: state gives a non-finite stiffness");
+    const double c = std::sqrt(acst::constrained_modulus(moduli) * 1000.0 / density);  // kPa -> Pa
+    if (!(std::isfinite(c) && c > 0.0))
+      return make_status(ACST_NONPHYSICAL_STATE, "acst_wave_speed: the state gives no finite positive stiffness", 1.0);
+    *speed = c;
     return ok_status();
   })
 }
@@ -156,8 +165,15 @@ const char* acst_diagnostic_name(int i) { return (i >= 0 && i < ACST_NDIAGNOSTIC
 acst_status acst_diagnostics(double* out, const acst_model* model, const double* stress, const double* statev) {
   ACST_REQUIRE(out && model && stress && (statev || state_size_of(*model) == 0),
                "acst_diagnostics: a pointer argument is NULL");
+  ACST_REQUIRE_PHYSICAL("acst_diagnostics");
   ACST_GUARD({
-    model->kind->diagnostics(out, stress, statev);
+    double v[ACST_NDIAGNOSTICS];
+    model->kind->diagnostics(v, stress, statev);
+    for (int i = 0; i < ACST_NDIAGNOSTICS; ++i)
+      if (model->kind->diagnostic_applies(i) && !std::isfinite(v[i]))
+        return make_status(ACST_NONPHYSICAL_STATE,
+                           std::string("acst_diagnostics: ") + diagnostic_names[i] + " is not finite for this state", 1.0);
+    std::copy(v, v + ACST_NDIAGNOSTICS, out);
     return ok_status();
   })
 }
@@ -170,6 +186,8 @@ acst_status acst_rotate_state(double* stress, double* statev, const acst_model* 
                    Q.determinant() > 0.0,
                "acst_rotate_state: rotation must be a finite proper orthogonal 3x3 matrix, row-major "
                "(|Q Q^T - I| < 1e-8, det Q > 0)");
+  ACST_REQUIRE_PHYSICAL("acst_rotate_state");
+  // A proper rotation of finite values is finite (it keeps norms): nothing to check after.
   stress_from_model(acst::rotate(stress_to_model(stress), Q), stress);
   rotate_tensorial_state(statev, model->kind->state(), Q);
   return ok_status();

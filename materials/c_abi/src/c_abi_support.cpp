@@ -1,5 +1,6 @@
 #include "c_abi_support.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -72,6 +73,16 @@ bool entry_ok(const Sym& stress, bool state_ok, const Sym& strain_increment, int
   return rep.status == integration::Status::ok;
 }
 
+bool all_finite(const double* values, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(values[i])) return false;
+  return true;
+}
+
+acst_status nonfinite_result(const std::string& what) {
+  return make_status(ACST_STEP_REDUCTION, what + " came out non-finite; retry with a smaller strain increment", 0.5);
+}
+
 acst_status text_to_buffer(const std::string& text, char* buffer, size_t* length, const char* function) {
   const size_t needed = text.size() + 1;
   const size_t room = *length;
@@ -85,6 +96,8 @@ acst_status text_to_buffer(const std::string& text, char* buffer, size_t* length
   std::memcpy(buffer, text.c_str(), needed);
   return ok_status();
 }
+
+bool reference_diagnostic(int i) { return i == 0 || i == 1 || i == ACST_NDIAGNOSTICS - 2 || i == ACST_NDIAGNOSTICS - 1; }
 
 void reference_diagnostics(double* out, const Sym& stress, const ElasticModuli& m) {
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -22,10 +22,16 @@ acst_status update_point(double* stress, double* statev, double* tangent, const 
 // says why) for a non-finite increment, stress or state.
 bool entry_ok(const Sym& stress, bool state_ok, const Sym& strain_increment, integration::Report& rep);
 
+// The OK rule (acst.h): an output with a NaN or an infinity is never returned with ACST_OK.
+bool all_finite(const double* values, int n);
+// A result that came out non-finite from finite inputs: ask for a smaller increment.
+acst_status nonfinite_result(const std::string& what);
+
 // Copies `text` into a host's buffer with snprintf-like rules (acst.h, acst_reproducer).
 acst_status text_to_buffer(const std::string& text, char* buffer, size_t* length, const char* function);
 
 // Diagnostics of a verification kind: p, q, G and K; the sand-specific entries are NaN.
 void reference_diagnostics(double* out, const Sym& stress, const ElasticModuli& moduli);
+bool reference_diagnostic(int i);  // whether entry i is one of those four
 
 }  // namespace acst::abi

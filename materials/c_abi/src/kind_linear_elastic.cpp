@@ -33,7 +33,9 @@ class LinearElasticKind final : public ModelKind {
                      integration::Report& rep) const override {
     const Sym s = stress_to_model(stress), deps = strain_to_model(dstrain);
     if (!entry_ok(s, true, deps, rep)) return status_from_report(rep);
-    stress_from_model(reference::updated_stress(m_, s, deps), stress);
+    const Sym next = reference::updated_stress(m_, s, deps);
+    if (!next.allFinite()) return nonfinite_result("the stress");
+    stress_from_model(next, stress);
     if (tangent) tangent_from_model(reference::stiffness(m_), tangent);
     return ok_status();
   }
@@ -43,6 +45,8 @@ class LinearElasticKind final : public ModelKind {
   void diagnostics(double* out, const double* stress, const double*) const override {
     reference_diagnostics(out, stress_to_model(stress), reference::moduli(m_));
   }
+
+  bool diagnostic_applies(int i) const override { return reference_diagnostic(i); }
 
  private:
   reference::LinearElastic m_;

@@ -1,7 +1,9 @@
 // ACST and its isotropic reduction behind the C ABI: the substepping integrator of
 // acst::Material, ten state variables (fabric, void ratio, H, substep hint, floor resets).
 #include <Eigen/Core>
+#include <cmath>
 #include <cstring>
+#include <string>
 
 #include "abi_convention.hpp"
 #include "acst/json_input.hpp"
@@ -29,9 +31,24 @@ class SandKind final : public ModelKind {
     if (!deposition_direction) return make_status(ACST_INVALID_INPUT, "acst_initial_state: a pointer argument is NULL", 1.0);
     const Eigen::Vector3d b(deposition_direction[0], deposition_direction[1], deposition_direction[2]);
     const State s = material_.initial_state(stress_to_model(stress0), void_ratio, b);
+    if (!s.fabric.allFinite() || !std::isfinite(s.H))
+      return make_status(ACST_INVALID_INPUT,
+                         "acst_initial_state: the initial stress is too large for a finite state (its stress ratio "
+                         "overflows)",
+                         1.0);
     store_state(s, statev);
     stress_from_model(s.stress, stress_out);
     return ok_status();
+  }
+
+  // The checks of Material::update's entry (materials/src/material.cpp), with what failed named.
+  std::string state_problem(const double* stress, const double* statev) const override {
+    if (const std::string p = ModelKind::state_problem(stress, statev); !p.empty()) return p;
+    const State s = state_of(stress, statev);
+    if (!void_ratio_admissible(s.void_ratio))
+      return "void ratio " + std::to_string(s.void_ratio) + " outside (0, " + std::to_string(void_ratio_limit) + ")";
+    if (s.H < 0.0) return "H (state variable 8) is negative";
+    return "";
   }
 
   acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,

@@ -46,10 +46,17 @@ class VonMisesKind final : public ModelKind {
     if (!entry_ok(point.stress, state_ok, deps, rep)) return status_from_report(rep);
     Mat6 D;
     rep.plastic = reference::radial_return(m_, point, deps, tangent ? &D : nullptr);
+    if (!point.stress.allFinite() || !std::isfinite(point.equivalent_plastic_strain) || (tangent && !D.allFinite()))
+      return nonfinite_result("the stress, plastic strain or tangent");
     stress_from_model(point.stress, stress);
     statev[0] = point.equivalent_plastic_strain;
     if (tangent) tangent_from_model(D, tangent);
     return ok_status();
+  }
+
+  std::string state_problem(const double* stress, const double* statev) const override {
+    if (const std::string p = ModelKind::state_problem(stress, statev); !p.empty()) return p;
+    return statev[0] >= 0.0 ? "" : "the equivalent plastic strain is negative";
   }
 
   ElasticModuli moduli(const double*, const double*) const override { return reference::moduli(m_.elastic); }
@@ -57,6 +64,8 @@ class VonMisesKind final : public ModelKind {
   void diagnostics(double* out, const double* stress, const double*) const override {
     reference_diagnostics(out, stress_to_model(stress), reference::moduli(m_.elastic));
   }
+
+  bool diagnostic_applies(int i) const override { return reference_diagnostic(i); }
 
  private:
   reference::VonMises m_;

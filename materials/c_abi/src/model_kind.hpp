@@ -31,8 +31,14 @@ class ModelKind {
   // Stress and state unchanged unless the status is OK; `rep` gets the counters.
   virtual acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
                              integration::Report& rep) const = 0;
+  // "" for a stress and state an update may start from, else what is wrong with which value
+  // (the entry check of acst_diagnostics, acst_wave_speed, acst_rotate_state). By default:
+  // a finite stress and finite state variables.
+  virtual std::string state_problem(const double* stress, const double* statev) const;
   virtual ElasticModuli moduli(const double* stress, const double* statev) const = 0;
   virtual void diagnostics(double* out, const double* stress, const double* statev) const = 0;
+  // Whether diagnostic i means something for this kind (the others are NaN by contract).
+  virtual bool diagnostic_applies(int i) const;
   // Relative density -> void ratio; kinds without a void ratio refuse.
   virtual acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const;
   // The element-test scene replaying one update (acst/reproducer.hpp); kinds the element driver

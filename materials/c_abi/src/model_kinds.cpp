@@ -31,6 +31,14 @@ std::string allowed_models() {
 
 }  // namespace
 
+std::string ModelKind::state_problem(const double* stress, const double* statev) const {
+  if (!all_finite(stress, 6)) return "the stress is not finite";
+  if (!all_finite(statev, state().size)) return "a state variable is not finite";
+  return "";
+}
+
+bool ModelKind::diagnostic_applies(int) const { return true; }
+
 acst_status ModelKind::void_ratio_from_relative_density(double*, double) const {
   return make_status(ACST_INVALID_INPUT, "acst_void_ratio_from_relative_density: only for sand models (ACST, isotropic)",
                      1.0);

@@ -13,10 +13,10 @@ struct ElasticModuli {
   double K;  // bulk modulus, kPa
 };
 
-// G = G0 pa (2.97 - e)^2 / (1 + e) sqrt(p/pa), evaluated at max(p, p_min).
+// G = G0 pa (2.97 - e)^2 / (1 + e) sqrt(p/pa), evaluated at max(p, p_min) (2.97: void_ratio_limit).
 inline double shear_modulus(const Parameters& prm, double e, double p) {
   const double pa = atmospheric_pressure;
-  const double d = 2.97 - e;
+  const double d = void_ratio_limit - e;
   return prm.G0 * pa * d * d / (1.0 + e) * std::sqrt(std::max(p, prm.p_min) / pa);
 }
 

@@ -8,8 +8,10 @@
 namespace acst {
 
 // F_0 = F0 (3 b b^T - I) / sqrt(6) for a unit deposition direction b (normal to the bedding planes).
+// Scaled by its largest component first: the norm of a direction like (1e200, 1e200, 0)
+// overflows, and normalising by it gave b = 0 and a fabric that was not deviatoric.
 inline Sym initial_fabric(double F0, const Eigen::Vector3d& deposition_direction) {
-  const Eigen::Vector3d b = deposition_direction.normalized();
+  const Eigen::Vector3d b = (deposition_direction / deposition_direction.cwiseAbs().maxCoeff()).normalized();
   Sym bb;
   bb << b[0] * b[0], b[1] * b[1], b[2] * b[2], b[0] * b[1], b[0] * b[2], b[1] * b[2];
   return F0 * (3.0 * bb - identity_tensor()) / std::sqrt(6.0);

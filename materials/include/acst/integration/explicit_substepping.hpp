@@ -10,7 +10,8 @@
 //   double unloading_cosine(const Vector& y, const Vector& elastic_dy, const Sym& deps) const;
 //   double relative_error(const Vector& y_new, const Vector& error) const;
 //   double hardening_memory(const Vector& y, const Sym& deps) const;   exact drift correction
-//   bool   admissible(const Vector& y) const;
+//   Reason admissibility(const Vector& y) const;                   none where y may be taken
+//   bool   may_reset_to_pressure_floor(const Vector& y, const Sym& deps) const;
 //   void   reset_to_pressure_floor(Vector& y, double& H) const;
 // Rates are per unit pseudo-time T in [0, 1] for the whole strain increment deps.
 #include <algorithm>
@@ -40,14 +41,14 @@ class ExplicitSubstepping {
     const double f_trial = model_.yield_value(trial.y, H, deps);
     if (f_trial <= opt_.ftol) {
       y = trial.error <= opt_.stol ? trial.y : elastic_update(y, deps, rep.counters);
-      return finish(y, H, rep, Reason::none);
+      return finish(y, H, rep, Reason::none, deps);
     }
     const double alpha = elastic_fraction(y, H, deps, trial.y, f_trial, rep.counters);
     if (alpha > 0.0) y = elastic_update(y, alpha * deps, rep.counters);
     const Sym plastic_part = (1.0 - alpha) * deps;
     const Reason r = opt_.scheme == Scheme::forward_euler ? forward_euler(y, H, plastic_part, rep)
                                                           : adaptive(y, H, substep_hint, plastic_part, rep);
-    return finish(y, H, rep, r);
+    return finish(y, H, rep, r, deps);
   }
 
  private:
@@ -162,7 +163,7 @@ class ExplicitSubstepping {
       const Reason r = rate(y, deps, k, rep.counters);
       if (r != Reason::none) return r;
       y += k / n;
-      if (!model_.admissible(y)) return Reason::pressure_floor;
+      if (const Reason bad = model_.admissibility(y); bad != Reason::none) return bad;
       H = model_.hardening_memory(y, deps);
       ++rep.counters.substeps_accepted;
       rep.plastic = true;
@@ -177,7 +178,9 @@ class ExplicitSubstepping {
     Counters& c = rep.counters;
     double T = 0.0;
     // dT_next: the natural substep size; h: the one tried (cut to reach T = 1 exactly).
-    double dT_next = (opt_.reuse_last_substep && substep_hint > 0.0) ? std::min(substep_hint, 1.0) : 1.0;
+    // A hint below the smallest substep (a host's stale or made-up state) would fail every call
+    // before it tried a substep: it counts as the smallest.
+    double dT_next = (opt_.reuse_last_substep && substep_hint > 0.0) ? std::clamp(substep_hint, opt_.min_substep, 1.0) : 1.0;
     bool k0_valid = false, last_rejected = false;
     Reason last_failure = Reason::none;
     while (T < 1.0) {
@@ -203,7 +206,7 @@ class ExplicitSubstepping {
           y_new += (h * tb.b[s]) * k[s];
           err += (h * (tb.b[s] - tb.b_low[s])) * k[s];
         }
-        if (!model_.admissible(y_new)) r = Reason::pressure_floor;
+        r = model_.admissibility(y_new);
       }
       if (r != Reason::none) {  // a stage left the admissible region: shrink hard
         last_failure = r;
@@ -238,9 +241,10 @@ class ExplicitSubstepping {
     return Reason::none;
   }
 
-  Report finish(Vector& y, double& H, Report& rep, Reason r) const {
-    if (r == Reason::none && !model_.admissible(y)) r = Reason::pressure_floor;
-    if (r == Reason::pressure_floor && opt_.pressure_floor == PressureFloorPolicy::reset) {
+  Report finish(Vector& y, double& H, Report& rep, Reason r, const Sym& deps) const {
+    if (r == Reason::none) r = model_.admissibility(y);
+    if (r == Reason::pressure_floor && opt_.pressure_floor == PressureFloorPolicy::reset &&
+        model_.may_reset_to_pressure_floor(y, deps)) {
       model_.reset_to_pressure_floor(y, H);
       ++rep.counters.pressure_floor_resets;
       r = Reason::none;

@@ -31,6 +31,11 @@ struct Options {
   PressureFloorPolicy pressure_floor = PressureFloorPolicy::reset;
 };
 
+// The one check of the options' values, for every way in (the JSON reader adds its path,
+// umat_'s PROPS go through acst::Material): "" when they are valid, else what is wrong and the
+// allowed range, e.g. "stol = 5: allowed range (0, 1)".
+std::string options_problem(const Options& o);
+
 const char* scheme_name(Scheme s);
 // Parses "FE", "ME", "RK23", "RK45" (case-sensitive); throws acst::InputError otherwise.
 Scheme scheme_from_name(const std::string& name);

@@ -16,7 +16,8 @@ enum class Reason {
   loss_of_uniqueness,    // non-positive loading-index denominator
   substep_too_small,     // dT fell below dT_min
   too_many_substeps,
-  non_finite,            // NaN or inf appeared in a rate
+  non_finite,            // NaN or inf appeared in a rate or a result
+  void_ratio_range,      // the void ratio left (0, void_ratio_limit)
 };
 
 const char* status_name(Status s);
