@@ -24,6 +24,9 @@
  * after creation, so one handle may be used from many threads at once; each thread passes its
  * own stress and state arrays. Every function returns an acst_status whose message says what went
  * wrong. Mutable arguments come first.
+ * ACST_OK means every output is finite and physical (void ratio in (0, 2.97), H >= 0,
+ * p >= p_min, tangent finite; docs/c-abi.md "The OK rule"); any other status leaves the caller's
+ * stress and state unchanged.
  */
 #ifndef ACST_H
 #define ACST_H
