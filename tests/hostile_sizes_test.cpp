@@ -67,6 +67,10 @@ TEST(HostileSizes, MpmSceneAsksForTooMuch) {
   expect_refused(cli, dir, mpm_scene("0.5", "1", "\"stop\": {\"time\": 1e4}, \"output\": {\"vtk_every_time\": 1e-6}"),
                  {"/output/vtk_every_time: the run would write up to 1.", "e+06 VTK frames", "more than the 10000 allowed"});
   expect_refused(cli, dir, mpm_scene("0.5", "1", "\"stop\": {\"steps\": 2e9}"), {"/stop/steps: 2e+09 is out of range"});
+  // A load-record row every step of 1e9: some 1e9 x 300 bytes held until the CSV is written.
+  expect_refused(cli, dir, mpm_scene("0.5", "1", "\"stop\": {\"steps\": 1e9}, \"output\": {\"every_step_csv\": true}"),
+                 {"/stop/steps: the scene needs about", "1.05e+09 load-record rows (/stop/steps, /output/every_step_csv)",
+                  "run fewer steps or record fewer rows"});
   fs::remove_all(dir);
 }
 

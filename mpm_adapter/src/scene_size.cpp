@@ -47,14 +47,18 @@ std::string stop_path(const Scene& s) {
 void check_memory(const Scene& s, const SceneSize& size, const std::string& steps_from) {
   const double cap = common::memory_limit_bytes(max_memory_bytes);
   if (size.bytes() <= cap) return;
+  const double record_share = size.record_rows * size.bytes_per_row / size.bytes();
   std::string what = f::shown(size.nodes) + " grid nodes (/grid/cell_size " + f::shown(s.cell_size) + " m) and " +
                      f::shown(size.particles) + " particles (/bodies/*/particles_per_cell)";
-  if (size.record_rows * size.bytes_per_row > 0.1 * size.bytes())  // named where it matters
+  if (record_share > 0.1)  // named where it matters
     what += " and " + f::shown(size.record_rows) + " load-record rows (" + steps_from +
             (s.output.every_step_csv ? ", /output/every_step_csv" : ", /solver/xpic_every") + ")";
-  f::fail("/grid/cell_size", "the scene needs about " + common::gib_text(size.bytes()) + " of memory for " + what +
-                                 ", more than the " + common::gib_text(cap) + " allowed (the smaller of " + common::gib_text(max_memory_bytes) +
-                                 " and this machine's physical memory); use larger cells or less soil");
+  const bool records = record_share > 0.5;
+  f::fail(records ? steps_from : "/grid/cell_size",
+          "the scene needs about " + common::gib_text(size.bytes()) + " of memory for " + what + ", more than the " +
+              common::gib_text(cap) + " allowed (the smaller of " + common::gib_text(max_memory_bytes) +
+              " and this machine's physical memory); " +
+              (records ? "run fewer steps or record fewer rows" : "use larger cells or less soil"));
 }
 
 }  // namespace
