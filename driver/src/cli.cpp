@@ -127,6 +127,75 @@ void print_summary(std::ostream& out, const std::vector<Outcome>& outcomes) {
   }
 }
 
+// Runs one scene, writing its CSV as the rows come, then its figure or its failure files; the
+// outcome is not ok when the run failed or its results could not be written.
+Outcome run_and_write(const Scene& s, int index, Progress& progress, std::ostream& err) {
+  const auto t0 = Clock::now();
+  Outcome o;
+  o.name = s.output.name;
+  // The lab curves were read when the scene was checked; one that cannot be read now is left
+  // out of the comparison, as it is out of the figure.
+  std::vector<LabComparer> labs;
+  for (const auto& lab : s.lab_data) {
+    try {
+      labs.emplace_back(read_lab_curve(lab));
+    } catch (const std::exception&) {
+    }
+  }
+  const fs::path dir(s.output.directory);
+  std::optional<CsvStream> csv;
+  fs::path base;
+  try {
+    fs::create_directories(dir);
+    base = fs::absolute(dir / s.output.name);
+    csv.emplace(s, base.string() + ".csv");
+  } catch (const std::exception& e) {
+    err << s.source << ": cannot write the results: " << e.what() << "\n";
+    progress.finished(index, s.output.name, 0, false, 0.0);
+    return o;
+  }
+  // Rows go to the CSV and the summaries as they come; none is kept.
+  Summariser summary;
+  PlotRanges ranges;
+  const RunResult r = stream_scene(
+      s,
+      [&](const Record& rec) {
+        csv->add(rec);
+        summary.add(rec);
+        ranges.add(rec);
+        for (LabComparer& l : labs) l.add(rec);
+      },
+      [&](long done, long) { progress.update(index, s.output.name, done); });
+  o.ok = r.ok;
+  o.increments = r.increments;
+  o.summary = summary.summary();
+  try {
+    if (r.ok) {
+      o.csv = base.string() + ".csv";
+      csv->publish();
+      if (s.output.plot) {
+        const std::string w = write_figure(s, ranges, o.csv, base.string() + ".png", base.string() + ".gp");
+        if (!w.empty()) err << s.source << ": warning: " << w << "\n";
+      }
+    } else {
+      err << s.source << ": run failed: " << r.message << "\n";
+      csv->publish_failed(base.string() + ".failed.csv", r.message);
+      if (r.reproducer) {
+        common::write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
+        err << s.source << ": wrote " << base.string() << ".reproducer.json (replays the failing increment) and "
+            << base.string() << ".failed.csv (the rows up to it)\n";
+      }
+    }
+  } catch (const std::exception& e) {
+    o.ok = false;
+    err << s.source << ": cannot write the results: " << e.what() << "\n";
+  }
+  for (const LabComparer& l : labs) o.labs.push_back(l.comparison());
+  progress.finished(index, s.output.name, r.increments, o.ok,
+                    std::chrono::duration<double>(Clock::now() - t0).count());
+  return o;
+}
+
 }  // namespace
 
 int element_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -173,75 +242,8 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
   std::vector<Outcome> outcomes;
   int failed = 0;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    const Scene& s = scenes[i];
-    const auto t0 = Clock::now();
-    Outcome o;
-    o.name = s.output.name;
-    // The lab curves were read when the scene was checked; one that cannot be read now is left
-    // out of the comparison, as it is out of the figure.
-    std::vector<LabComparer> labs;
-    for (const auto& lab : s.lab_data) {
-      try {
-        labs.emplace_back(read_lab_curve(lab));
-      } catch (const std::exception&) {
-      }
-    }
-    const fs::path dir(s.output.directory);
-    std::optional<CsvStream> csv;
-    fs::path base;
-    try {
-      fs::create_directories(dir);
-      base = fs::absolute(dir / s.output.name);
-      csv.emplace(s, base.string() + ".csv");
-    } catch (const std::exception& e) {
-      ++failed;
-      err << s.source << ": cannot write the results: " << e.what() << "\n";
-      progress.finished(static_cast<int>(i), s.output.name, 0, false, 0.0);
-      outcomes.push_back(std::move(o));
-      continue;
-    }
-    // Rows go to the CSV and the summaries as they come; none is kept.
-    Summariser summary;
-    PlotRanges ranges;
-    const RunResult r = stream_scene(
-        s,
-        [&](const Record& rec) {
-          csv->add(rec);
-          summary.add(rec);
-          ranges.add(rec);
-          for (LabComparer& l : labs) l.add(rec);
-        },
-        [&](long done, long) { progress.update(static_cast<int>(i), s.output.name, done); });
-    o.ok = r.ok;
-    o.increments = r.increments;
-    o.summary = summary.summary();
-    try {
-      if (r.ok) {
-        o.csv = base.string() + ".csv";
-        csv->publish();
-        if (s.output.plot) {
-          const std::string w = write_figure(s, ranges, o.csv, base.string() + ".png", base.string() + ".gp");
-          if (!w.empty()) err << s.source << ": warning: " << w << "\n";
-        }
-      } else {
-        ++failed;
-        err << s.source << ": run failed: " << r.message << "\n";
-        csv->publish_failed(base.string() + ".failed.csv", r.message);
-        if (r.reproducer) {
-          common::write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
-          err << s.source << ": wrote " << base.string() << ".reproducer.json (replays the failing increment) and "
-              << base.string() << ".failed.csv (the rows up to it)\n";
-        }
-      }
-    } catch (const std::exception& e) {
-      ++failed;
-      o.ok = false;
-      err << s.source << ": cannot write the results: " << e.what() << "\n";
-    }
-    for (const LabComparer& l : labs) o.labs.push_back(l.comparison());
-    progress.finished(static_cast<int>(i), s.output.name, r.increments, o.ok,
-                      std::chrono::duration<double>(Clock::now() - t0).count());
-    outcomes.push_back(std::move(o));
+    outcomes.push_back(run_and_write(scenes[i], static_cast<int>(i), progress, err));
+    failed += outcomes.back().ok ? 0 : 1;
   }
   if (!quiet) {
     print_summary(out, outcomes);
