@@ -118,9 +118,6 @@ std::string long_elastic_scene(long n) {
 }
 
 TEST(HostileSizes, ElementRunnerMemoryDoesNotGrowWithTheIncrements) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "AddressSanitizer keeps freed memory in quarantine: the peak memory says nothing here";
-#else
   const fs::path dir = scratch_folder("sizes_stream");
   auto run = [&](long n) {
     write(dir / "long.json", long_elastic_scene(n));
@@ -144,7 +141,6 @@ TEST(HostileSizes, ElementRunnerMemoryDoesNotGrowWithTheIncrements) {
   EXPECT_LT(8 * 1024, held_kb / 4);  // the bound could catch rows held in memory
   EXPECT_LT(grown_kb, 8 * 1024) << "peak memory grew by " << grown_kb << " kB over " << n << " increments";
   fs::remove_all(dir);
-#endif
 }
 
 TEST(HostileSizes, FailedRunAfterManyRowsLeavesTheGoodCsvWhole) {
