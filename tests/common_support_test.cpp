@@ -1,5 +1,5 @@
 // The support layer (common/): JSON field readers name the JSON path, files are written whole
-// or not at all, paths resolve against the naming file's folder, durations read as people write
+// or not at all (at once or streamed), paths resolve against the naming file's folder, durations read as people write
 // them, and the parallel loop visits every index exactly once and passes exceptions on.
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "acst_common/atomic_file.hpp"
 #include "acst_common/duration.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/interpolate.hpp"
@@ -18,6 +19,7 @@
 #include "acst_common/parallel_for.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_common/result_folder.hpp"
+#include "scratch.hpp"
 
 namespace fs = std::filesystem;
 namespace f = acst::common::fields;
@@ -98,6 +100,40 @@ TEST(CommonFiles, AnEarlierRunIsSetAsideWholeEvenAfterAnInterruption) {
   EXPECT_FALSE(acst::common::is_temporary_name(".tmp1"));
   EXPECT_FALSE(acst::common::is_temporary_name(".a.tmp"));
   EXPECT_FALSE(acst::common::is_temporary_name("a.tmp12"));
+  fs::remove_all(dir);
+}
+
+TEST(CommonFiles, StreamedWriteAppearsWholeAtCommitAndNotAtAllWhenDropped) {
+  const fs::path dir = acst::test::scratch_folder("common_stream");
+  const std::string file = (dir / "result.csv").string();
+  acst::common::write_file_atomically(file, "old\n");
+  auto hidden = [&] {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string()[0] == '.';
+    return n;
+  };
+  {
+    acst::common::AtomicFileWriter w(file);
+    w.write("new ");
+    w.write("rows\n");
+    EXPECT_EQ(w.size(), 9u);
+    EXPECT_EQ(acst::common::read_input_file(file), "old\n");  // not before the commit
+    EXPECT_EQ(hidden(), 1);
+  }  // dropped: the old file stays, the temporary file goes
+  EXPECT_EQ(acst::common::read_input_file(file), "old\n");
+  EXPECT_EQ(hidden(), 0);
+  // A second writer takes a range of the first's text (a header put in front of written rows).
+  acst::common::AtomicFileWriter rows(file);
+  rows.write("0123456789");
+  acst::common::AtomicFileWriter other((dir / "other.csv").string());
+  other.write("head,");
+  other.copy_from(rows, 3, 7);
+  other.commit();
+  rows.commit();
+  EXPECT_EQ(acst::common::read_input_file((dir / "other.csv").string()), "head,3456");
+  EXPECT_EQ(acst::common::read_input_file(file), "0123456789");
+  EXPECT_EQ(hidden(), 0);
+  EXPECT_THROW(acst::common::AtomicFileWriter((dir / "no" / "such" / "folder.csv").string()), std::runtime_error);
   fs::remove_all(dir);
 }
 

@@ -9,8 +9,11 @@
 
 #include "acst/material.hpp"
 #include "acst_common/interpolate.hpp"
+#include "acst_common/json_fields.hpp"
+#include "acst_common/memory.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/record.hpp"
+#include "acst_driver/scene.hpp"
 #include "acst_common/parallel_for.hpp"
 
 namespace acst::calibration {
@@ -42,6 +45,18 @@ int parameter_index(const std::string& name) {
   for (int i = 0; i < parameter_count; ++i)
     if (name == parameter_names[i]) return i;
   return -1;
+}
+
+// Increments of a run to `to_pct` in steps of `step_pct`, counted in double before it becomes an
+// int: a lab curve's strains are not bounded by the description.
+int run_increments(double to_pct, double step_pct, const ExperimentSpec& x) {
+  const double n = std::ceil(to_pct / step_pct);
+  if (!(n <= static_cast<double>(driver::max_step_increments)))
+    throw common::InputError(x.path + "/strain_increment_pct: a run to " + common::fields::shown(to_pct) + " % in steps of " +
+                             common::fields::shown(step_pct) + " % takes " + common::fields::shown(n) +
+                             " increments, more than the " + std::to_string(driver::max_step_increments) +
+                             " an element-test step may have");
+  return static_cast<int>(n);
 }
 
 // Scene of one run: optional isotropic consolidation from void_ratio_at_kPa, then shearing.
@@ -111,7 +126,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
           selected = selected && std::find(values.begin(), values.end(), v) != values.end();
         }
         if (!selected) continue;
-        const int n = static_cast<int>(std::ceil(x.peak_search_strain_pct / x.strain_increment_pct));
+        const int n = run_increments(x.peak_search_strain_pct, x.strain_increment_pct, x);
         add_simulation(static_cast<int>(i), b[i], omega[i], scene_json(spec, x, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
         phi.x.push_back(static_cast<double>(i));
         phi.measured.push_back(measured[i]);
@@ -148,7 +163,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       double last = 0.0;
       for (const Series& s : series_[k]) last = std::max(last, s.x.back());
       const double to = last + 2.0 * x.strain_increment_pct;
-      const int n = static_cast<int>(std::ceil(to / x.strain_increment_pct));
+      const int n = run_increments(to, x.strain_increment_pct, x);
       add_simulation(-1, x.b, x.bedding_angle_deg, scene_json(spec, x, x.test, x.b, x.bedding_angle_deg, to, n), n);
     }
     for (const Series& s : series_[k]) residual_count_ += static_cast<int>(s.x.size());
@@ -158,6 +173,31 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
   std::stable_sort(schedule_.begin(), schedule_.end(),
                    [&](std::size_t a, std::size_t b) { return simulations_[a].increments > simulations_[b].increments; });
   base_ = simulations_.front().scene.material->parameters();
+  check_size();
+}
+
+// One batch of evaluations (the design, or a Jacobian's columns) holds the shearing curve of
+// every run at every point, and each evaluation runs every element test: refuse a description
+// whose batch cannot fit in memory or whose evaluation runs more increments than the largest
+// element test may have (driver::max_total_increments).
+void Problem::check_size() const {
+  using common::fields::shown;
+  double increments = 0.0;
+  for (const Simulation& s : simulations_) increments += static_cast<double>(s.increments) + 2.0;
+  const std::string tests = std::to_string(simulations_.size()) + " element tests";
+  if (increments > driver::max_total_increments)
+    throw common::InputError("/experiments: one evaluation runs " + shown(increments) + " increments over " + tests +
+                             ", more than the " + shown(driver::max_total_increments) + " allowed");
+  const double variables = static_cast<double>(variables_.size()), residuals = residual_count_;
+  const double points = std::max<double>(spec_.optimizer.design_points, variables);
+  const double bytes = points * (increments * 3 * sizeof(double) + residuals * sizeof(double)) + residuals * variables * sizeof(double);
+  const double cap = common::memory_limit_bytes(max_memory_bytes);
+  if (bytes > cap)
+    throw common::InputError(std::string(spec_.optimizer.design_points >= variables ? "/optimizer/design_points" : "/parameters") +
+                             ": a batch of " + shown(points) + " evaluations of " + tests + " (" + shown(increments) +
+                             " increments, " + shown(residuals) + " points) needs about " + common::gib_text(bytes) +
+                             " of memory, more than the " + common::gib_text(cap) + " allowed (the smaller of " +
+                             common::gib_text(max_memory_bytes) + " and this machine's physical memory)");
 }
 
 Eigen::VectorXd Problem::start() const {
@@ -193,18 +233,15 @@ SimulationOutcome Problem::simulate(const Simulation& sim, const Eigen::VectorXd
     const Parameters p = parameters(theta, x.group);
     validate(p);
     scene.material.emplace(p, sim.scene.material->options());
-    driver::RunResult run = driver::run_scene(scene);
-    out.ok = run.ok;
-    out.message = run.message;
-    counters_.increments += run.increments;
-    counters_.substeps += run.substeps;
-    counters_.iterations += run.iterations;
     Sym start_strain = Sym::Zero();
     bool started = false;
-    for (const driver::Record& rec : run.records) {
+    std::vector<driver::Record> kept;
+    // The rows are used as they come: only the shearing curve is kept, and every row only for a report.
+    driver::RunResult run = driver::stream_scene(scene, [&](const driver::Record& rec) {
+      if (keep_run) kept.push_back(rec);
       if (rec.step < sim.shear_step) {
         start_strain = rec.strain;
-        continue;
+        return;
       }
       if (!started) {
         started = true;
@@ -214,13 +251,19 @@ SimulationOutcome Problem::simulate(const Simulation& sim, const Eigen::VectorXd
       }
       const Sym strain = rec.strain - start_strain;
       const double eps_a = driver::axial_strain_pct(strain);
-      if (eps_a <= out.eps_a_pct.back()) continue;  // a cut-back row may repeat a strain
+      if (eps_a <= out.eps_a_pct.back()) return;  // a cut-back row may repeat a strain
       out.eps_a_pct.push_back(eps_a);
       out.stress.push_back(x.stress_measure == StressMeasure::q_kPa ? rec.stress[0] - rec.stress[2]
                                                                        : rec.stress[0] / rec.stress[2]);
       out.eps_v_pct.push_back(driver::volumetric_strain_pct(strain));
       out.peak_phi_deg = std::max(out.peak_phi_deg, friction_angle_deg(rec.stress));
-    }
+    });
+    run.records = std::move(kept);
+    out.ok = run.ok;
+    out.message = run.message;
+    counters_.increments += run.increments;
+    counters_.substeps += run.substeps;
+    counters_.iterations += run.iterations;
     if (keep_run) out.run = std::move(run);
   } catch (const std::exception& e) {  // parameters outside the material's ranges, or worse
     out.ok = false;

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "acst_common/atomic_file.hpp"
 #include "acst_common/input_error.hpp"
 
 namespace acst::common {
@@ -79,23 +80,9 @@ std::string temporary_name(const std::string& path) {
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = temporary_name(path);
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write '" + tmp + "'");
-    f.write(text.data(), static_cast<std::streamsize>(text.size()));
-    f.close();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("writing '" + tmp + "' failed");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot rename '" + tmp + "' to '" + path + "': " + ec.message());
-  }
+  AtomicFileWriter file(path);
+  file.write(text);
+  file.commit();
 }
 
 }  // namespace acst::common

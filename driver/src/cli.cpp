@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "acst_common/cli.hpp"
@@ -49,17 +50,6 @@ void usage(std::ostream& o) {
   for (const auto& p : preset_names()) o << ' ' << p;
   o << "\n\nExit status: 0 all scenes ran; 1 a scene failed while running; 2 bad command line or invalid scene.\n"
        "Example: acst_element data/scenes/element/*.json\n";
-}
-
-long planned_increments(const Scene& s) {
-  long n = 0;
-  for (const Block& b : s.blocks) {
-    long per = 0;
-    for (const Step& st : b.steps)
-      for (const Segment& g : st.segments) per += g.increments;
-    n += per * b.cycles;
-  }
-  return n;
 }
 
 std::string fixed(double v, int decimals) {
@@ -137,6 +127,75 @@ void print_summary(std::ostream& out, const std::vector<Outcome>& outcomes) {
   }
 }
 
+// Runs one scene, writing its CSV as the rows come, then its figure or its failure files; the
+// outcome is not ok when the run failed or its results could not be written.
+Outcome run_and_write(const Scene& s, int index, Progress& progress, std::ostream& err) {
+  const auto t0 = Clock::now();
+  Outcome o;
+  o.name = s.output.name;
+  // The lab curves were read when the scene was checked; one that cannot be read now is left
+  // out of the comparison, as it is out of the figure.
+  std::vector<LabComparer> labs;
+  for (const auto& lab : s.lab_data) {
+    try {
+      labs.emplace_back(read_lab_curve(lab));
+    } catch (const std::exception&) {
+    }
+  }
+  const fs::path dir(s.output.directory);
+  std::optional<CsvStream> csv;
+  fs::path base;
+  try {
+    fs::create_directories(dir);
+    base = fs::absolute(dir / s.output.name);
+    csv.emplace(s, base.string() + ".csv");
+  } catch (const std::exception& e) {
+    err << s.source << ": cannot write the results: " << e.what() << "\n";
+    progress.finished(index, s.output.name, 0, false, 0.0);
+    return o;
+  }
+  // Rows go to the CSV and the summaries as they come; none is kept.
+  Summariser summary;
+  PlotRanges ranges;
+  const RunResult r = stream_scene(
+      s,
+      [&](const Record& rec) {
+        csv->add(rec);
+        summary.add(rec);
+        ranges.add(rec);
+        for (LabComparer& l : labs) l.add(rec);
+      },
+      [&](long done, long) { progress.update(index, s.output.name, done); });
+  o.ok = r.ok;
+  o.increments = r.increments;
+  o.summary = summary.summary();
+  try {
+    if (r.ok) {
+      o.csv = base.string() + ".csv";
+      csv->publish();
+      if (s.output.plot) {
+        const std::string w = write_figure(s, ranges, o.csv, base.string() + ".png", base.string() + ".gp");
+        if (!w.empty()) err << s.source << ": warning: " << w << "\n";
+      }
+    } else {
+      err << s.source << ": run failed: " << r.message << "\n";
+      csv->publish_failed(base.string() + ".failed.csv", r.message);
+      if (r.reproducer) {
+        common::write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
+        err << s.source << ": wrote " << base.string() << ".reproducer.json (replays the failing increment) and "
+            << base.string() << ".failed.csv (the rows up to it)\n";
+      }
+    }
+  } catch (const std::exception& e) {
+    o.ok = false;
+    err << s.source << ": cannot write the results: " << e.what() << "\n";
+  }
+  for (const LabComparer& l : labs) o.labs.push_back(l.comparison());
+  progress.finished(index, s.output.name, r.increments, o.ok,
+                    std::chrono::duration<double>(Clock::now() - t0).count());
+  return o;
+}
+
 }  // namespace
 
 int element_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -178,54 +237,13 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
     return 2;
   }
   long planned = 0;
-  for (const Scene& s : scenes) planned += planned_increments(s);
+  for (const Scene& s : scenes) planned += static_cast<long>(scene_size(s.blocks, 1).increments);
   Progress progress(err, !quiet, static_cast<int>(scenes.size()), planned);
   std::vector<Outcome> outcomes;
   int failed = 0;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    const Scene& s = scenes[i];
-    const auto t0 = Clock::now();
-    Outcome o;
-    o.name = s.output.name;
-    RunResult r = run_scene(s, [&](long done, long) { progress.update(static_cast<int>(i), s.output.name, done); });
-    o.ok = r.ok;
-    o.increments = r.increments;
-    o.summary = summarise(r);
-    const fs::path dir(s.output.directory);
-    try {
-      fs::create_directories(dir);
-      const fs::path base = fs::absolute(dir / s.output.name);
-      if (r.ok) {
-        o.csv = base.string() + ".csv";
-        common::write_file_atomically(o.csv, csv_text(s, r));
-        if (s.output.plot) {
-          const std::string w = write_figure(s, r, o.csv, base.string() + ".png", base.string() + ".gp");
-          if (!w.empty()) err << s.source << ": warning: " << w << "\n";
-        }
-      } else {
-        ++failed;
-        err << s.source << ": run failed: " << r.message << "\n";
-        common::write_file_atomically(base.string() + ".failed.csv", csv_text(s, r));
-        if (r.reproducer) {
-          common::write_file_atomically(base.string() + ".reproducer.json", r.reproducer->dump(2) + "\n");
-          err << s.source << ": wrote " << base.string() << ".reproducer.json (replays the failing increment) and "
-              << base.string() << ".failed.csv (the rows up to it)\n";
-        }
-      }
-    } catch (const std::exception& e) {
-      ++failed;
-      o.ok = false;
-      err << s.source << ": cannot write the results: " << e.what() << "\n";
-    }
-    for (const auto& lab : s.lab_data) {
-      try {
-        o.labs.push_back(compare_with_lab(r, read_lab_curve(lab)));
-      } catch (const std::exception&) {
-      }
-    }
-    progress.finished(static_cast<int>(i), s.output.name, r.increments, o.ok,
-                      std::chrono::duration<double>(Clock::now() - t0).count());
-    outcomes.push_back(std::move(o));
+    outcomes.push_back(run_and_write(scenes[i], static_cast<int>(i), progress, err));
+    failed += outcomes.back().ok ? 0 : 1;
   }
   if (!quiet) {
     print_summary(out, outcomes);

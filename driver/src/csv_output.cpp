@@ -33,11 +33,10 @@ std::string vec(const Sym& v) {
 
 }  // namespace
 
-std::string csv_text(const Scene& scene, const RunResult& result) {
+std::string csv_comments(const Scene& scene) {
   const Parameters& par = scene.material->parameters();
   const integration::Options& opt = scene.material->options();
   std::string out;
-  out.reserve(400 * (result.records.size() + 20));
   // Names and messages from outside stay on their comment line: a line break would start a
   // line that readers take for the header row or data.
   using common::one_line;
@@ -71,37 +70,52 @@ std::string csv_text(const Scene& scene, const RunResult& result) {
       "step within the repeat block\n"
       "# substeps: accepted material substeps; iterations: Newton iterations (all cut-back pieces); cutbacks: "
       "halvings of the increment; status: start | ok | cutback | exit:<condition>\n";
-  if (!result.ok) out += "# RUN FAILED: " + one_line(result.message) + "\n";
-  out +=
+  return out;
+}
+
+std::string csv_failure_line(const std::string& message) { return "# RUN FAILED: " + common::one_line(message) + "\n"; }
+
+const std::string& csv_column_names() {
+  static const std::string names =
       "increment,time,step,cycle,stage,eps_11_pct,eps_22_pct,eps_33_pct,gamma_12_pct,gamma_13_pct,gamma_23_pct,"
       "sigma_11_kPa,sigma_22_kPa,sigma_33_kPa,sigma_12_kPa,sigma_13_kPa,sigma_23_kPa,p_kPa,q_kPa,stress_ratio,"
       "e_v_pct,e_q_pct,eps_a_pct,void_ratio,psi,zeta,A,F_norm,u_excess_kPa,substeps,iterations,cutbacks,status\n";
-  for (const Record& r : result.records) {
-    put(out, r.increment);
-    put(out, r.time);
-    put(out, static_cast<long>(r.step));
-    put(out, static_cast<long>(r.cycle));
-    put(out, static_cast<long>(r.stage));
-    for (int i = 0; i < 6; ++i) put(out, units::strain_to_scene(r.strain[i], i));
-    for (int i = 0; i < 6; ++i) put(out, r.stress[i]);
-    put(out, mean_stress(r.stress));
-    put(out, signed_q(r.stress));
-    put(out, stress_ratio_of(r.stress));
-    put(out, volumetric_strain_pct(r.strain));
-    put(out, deviatoric_strain_pct(r.strain));
-    put(out, axial_strain_pct(r.strain));
-    put(out, r.void_ratio);
-    put(out, r.psi);
-    put(out, r.zeta);
-    put(out, r.A);
-    put(out, r.fabric_norm);
-    put(out, r.u_excess);
-    put(out, static_cast<long>(r.substeps));
-    put(out, static_cast<long>(r.iterations));
-    put(out, static_cast<long>(r.cutbacks));
-    out += r.status;
-    out += '\n';
-  }
+  return names;
+}
+
+void append_csv_row(std::string& out, const Record& r) {
+  put(out, r.increment);
+  put(out, r.time);
+  put(out, static_cast<long>(r.step));
+  put(out, static_cast<long>(r.cycle));
+  put(out, static_cast<long>(r.stage));
+  for (int i = 0; i < 6; ++i) put(out, units::strain_to_scene(r.strain[i], i));
+  for (int i = 0; i < 6; ++i) put(out, r.stress[i]);
+  put(out, mean_stress(r.stress));
+  put(out, signed_q(r.stress));
+  put(out, stress_ratio_of(r.stress));
+  put(out, volumetric_strain_pct(r.strain));
+  put(out, deviatoric_strain_pct(r.strain));
+  put(out, axial_strain_pct(r.strain));
+  put(out, r.void_ratio);
+  put(out, r.psi);
+  put(out, r.zeta);
+  put(out, r.A);
+  put(out, r.fabric_norm);
+  put(out, r.u_excess);
+  put(out, static_cast<long>(r.substeps));
+  put(out, static_cast<long>(r.iterations));
+  put(out, static_cast<long>(r.cutbacks));
+  out += r.status;
+  out += '\n';
+}
+
+std::string csv_text(const Scene& scene, const RunResult& result) {
+  std::string out = csv_comments(scene);
+  out.reserve(out.size() + 400 * (result.records.size() + 2));
+  if (!result.ok) out += csv_failure_line(result.message);
+  out += csv_column_names();
+  for (const Record& r : result.records) append_csv_row(out, r);
   return out;
 }
 

@@ -84,7 +84,19 @@ std::string log_ticks(double lo, double hi) {
 
 }  // namespace
 
-std::string write_figure(const Scene& scene, const RunResult& result, const std::string& csv_path,
+void PlotRanges::add(const Record& r) {
+  const double p = mean_stress(r.stress), q = signed_q(r.stress);
+  p_lo = std::min(p_lo, p);
+  p_hi = std::max(p_hi, p);
+  q_lo = std::min(q_lo, q);
+  q_hi = std::max(q_hi, q);
+  ev_lo = std::min(ev_lo, volumetric_strain_pct(r.strain));
+  ev_hi = std::max(ev_hi, volumetric_strain_pct(r.strain));
+  e_lo = std::min(e_lo, r.void_ratio);
+  e_hi = std::max(e_hi, r.void_ratio);
+}
+
+std::string write_figure(const Scene& scene, const PlotRanges& ranges, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path) {
   if (!common::gnuplot_available()) return "gnuplot was not found on PATH: no PNG written (the CSV is complete)";
   const Parameters& par = scene.material->parameters();
@@ -114,14 +126,7 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
   }
   const std::string data = common::gp_quoted(csv_path);
   // Ranges of p and q from the data, so the reference lines do not stretch the axes.
-  double p_lo = INFINITY, p_hi = -INFINITY, q_lo = 0.0, q_hi = 0.0;
-  for (const Record& r : result.records) {
-    const double p = mean_stress(r.stress), q = signed_q(r.stress);
-    p_lo = std::min(p_lo, p);
-    p_hi = std::max(p_hi, p);
-    q_lo = std::min(q_lo, q);
-    q_hi = std::max(q_hi, q);
-  }
+  double p_lo = ranges.p_lo, p_hi = ranges.p_hi, q_lo = ranges.q_lo, q_hi = ranges.q_hi;
   for (const auto& l : labs) {
     p_lo = std::min(p_lo, l.p_lo);
     p_hi = std::max(p_hi, l.p_hi);
@@ -129,17 +134,9 @@ std::string write_figure(const Scene& scene, const RunResult& result, const std:
     q_hi = std::max(q_hi, l.q_hi);
   }
   if (!(p_hi > p_lo)) p_hi = p_lo * 1.1 + 1.0;
-  double ev_lo = 0.0, ev_hi = 0.0;
-  for (const Record& r : result.records) {
-    ev_lo = std::min(ev_lo, volumetric_strain_pct(r.strain));
-    ev_hi = std::max(ev_hi, volumetric_strain_pct(r.strain));
-  }
+  const double ev_lo = ranges.ev_lo, ev_hi = ranges.ev_hi;
   // Void ratio axis: the simulation, the lab points and the critical state line over the p range.
-  double e_lo = INFINITY, e_hi = -INFINITY;
-  for (const Record& r : result.records) {
-    e_lo = std::min(e_lo, r.void_ratio);
-    e_hi = std::max(e_hi, r.void_ratio);
-  }
+  double e_lo = ranges.e_lo, e_hi = ranges.e_hi;
   for (const auto& l : labs) {
     e_lo = std::min(e_lo, l.e_lo);
     e_hi = std::max(e_hi, l.e_hi);

@@ -52,8 +52,8 @@ double signed_margin(const ExitCondition& c, const Point& pt) {  // >= 0 when th
 
 class Runner {
  public:
-  Runner(const Scene& scene, const ProgressFn& progress)
-      : scene_(scene), mat_(*scene.material), progress_(progress) {}
+  Runner(const Scene& scene, const RecordFn& on_record, const ProgressFn& progress)
+      : scene_(scene), mat_(*scene.material), on_record_(on_record), progress_(progress) {}
 
   RunResult run() {
     const InitialState& is = scene_.initial;
@@ -61,13 +61,7 @@ class Runner {
     if (is.fabric) pt_.state.fabric = *is.fabric;
     if (is.H) pt_.state.H = *is.H;
     if (is.substep_hint) pt_.state.substep_hint = *is.substep_hint;
-    planned_ = 0;
-    for (const Block& b : scene_.blocks) {
-      long per_cycle = 0;
-      for (const Step& s : b.steps)
-        for (const Segment& g : s.segments) per_cycle += g.increments;
-      planned_ += per_cycle * b.cycles;
-    }
+    planned_ = static_cast<long>(scene_size(scene_.blocks, 1).increments);  // below max_total_increments
     record("start", {}, 0, 1, 0);
     result_.ok = true;
     for (std::size_t i = 0; i < scene_.blocks.size() && result_.ok; ++i) run_block(scene_.blocks[i], static_cast<int>(i));
@@ -80,6 +74,7 @@ class Runner {
 
   const Scene& scene_;
   const Material& mat_;
+  const RecordFn& on_record_;
   const ProgressFn& progress_;
   RunResult result_;
   Point pt_;
@@ -272,7 +267,7 @@ class Runner {
     r.iterations = w.iterations;
     r.cutbacks = w.cutbacks;
     r.status = status;
-    result_.records.push_back(std::move(r));
+    on_record_(r);
   }
 
   static json vector_json(const Sym& v) { return json::array({v[0], v[1], v[2], v[3], v[4], v[5]}); }
@@ -327,6 +322,15 @@ class Runner {
 
 }  // namespace
 
-RunResult run_scene(const Scene& scene, const ProgressFn& progress) { return Runner(scene, progress).run(); }
+RunResult stream_scene(const Scene& scene, const RecordFn& on_record, const ProgressFn& progress) {
+  return Runner(scene, on_record, progress).run();
+}
+
+RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
+  std::vector<Record> records;
+  RunResult r = stream_scene(scene, [&](const Record& rec) { records.push_back(rec); }, progress);
+  r.records = std::move(records);
+  return r;
+}
 
 }  // namespace acst::driver

@@ -190,6 +190,7 @@ Scene parse_scene(const std::string& text, const std::string& base_dir, const st
   scene.blocks = read_steps(j["steps"], "/steps", base_dir);
   if (j.contains("solver")) read_solver(j["solver"], "/solver", scene.solver);
   if (j.contains("output")) read_output(j["output"], "/output", scene.output);
+  check_scene_size(scene.blocks, scene.output.every);
   if (scene.output.name.empty())  // the scene file's stem names the outputs and reaches the figure's script
     scene.output.name = common::require_plain_stem(default_name.empty() ? "element_test" : default_name,
                                                    "/output/name (not given; the scene file's name would be used)");

@@ -14,7 +14,6 @@ namespace f = common::fields;
 namespace {
 
 constexpr double percent = 0.01;  // strain in the scene is in percent
-constexpr long long max_increments = 10000000;
 using units::strain_from_scene;
 
 const std::vector<std::string> presets = {
@@ -185,7 +184,7 @@ std::vector<Segment> read_strain_path(const std::string& file, const std::string
 
 int read_increments(const json& j, const std::string& path) {
   if (!j.contains("increments")) f::fail(path + "/increments", "required: the number of increments of the step (>= 1)");
-  return static_cast<int>(f::integer(j["increments"], path + "/increments", 1, max_increments));
+  return static_cast<int>(f::integer(j["increments"], path + "/increments", 1, max_step_increments));
 }
 
 Step read_preset_step(const json& j, const std::string& path, const std::string& base_dir) {
@@ -260,7 +259,7 @@ Step read_preset_step(const json& j, const std::string& path, const std::string&
     if (j.contains("increments")) f::fail(p + "increments", "not used by strain_path_csv (use increments_per_row)");
     const std::string file = common::resolve(base_dir, f::string(required("file"), p + "file"));
     const int per_row = j.contains("increments_per_row")
-                            ? static_cast<int>(f::integer(j["increments_per_row"], p + "increments_per_row", 1, max_increments))
+                            ? static_cast<int>(f::integer(j["increments_per_row"], p + "increments_per_row", 1, max_step_increments))
                             : 1;
     s.segments = read_strain_path(file, p + "file", per_row);
   } else {

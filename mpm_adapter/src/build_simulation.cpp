@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "acst_mpm/scene.hpp"
+#include "acst_mpm/scene_size.hpp"
 
 namespace acst::mpm {
 namespace {
@@ -29,32 +30,22 @@ double column_top(const Scene& s, double x) {
   return top;
 }
 
-// The scene's soil right of the footing's centre line (the reader checked the scene is its own
-// mirror image about that line, and the line lies on the grid).
-Scene right_half(const Scene& s) {
-  Scene half = s;
-  for (BodySpec& b : half.bodies) b.x_min = s.footing->centre_x;
-  return half;
-}
-
 }  // namespace
 
 Simulation build_simulation(const Scene& scene) {
   const bool half = scene.footing && scene.footing->symmetric_half;
-  const Scene s = half ? right_half(scene) : scene;
+  const Scene s = modelled_part(scene);
   const double h = s.cell_size;
-  double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY, y_max = -INFINITY;
-  for (const BodySpec& b : s.bodies) {
-    x_min = std::min(x_min, b.x_min), x_max = std::max(x_max, b.x_max);
-    y_min = std::min(y_min, b.y_min), y_max = std::max(y_max, b.y_max);
-  }
-  constexpr int margin = 3;  // cells beyond the walls: the stencil reaches two
+  // The reader checked the node and particle counts against their caps (scene_size.hpp).
+  const GridExtent extent = grid_extent(s);
+  const double x_min = extent.x_min, x_max = extent.x_max, y_min = extent.y_min;
+  constexpr int margin = GridExtent::margin;
   Grid grid;
   grid.h = h;
   grid.x0 = x_min - margin * h;
   grid.y0 = y_min - margin * h;
-  grid.nx = static_cast<int>(std::lround((x_max - x_min) / h)) + 2 * margin + 1;
-  grid.ny = static_cast<int>(std::lround((y_max - y_min) / h)) + margin + s.cells_above + 1;
+  grid.nx = static_cast<int>(extent.nodes_x);
+  grid.ny = static_cast<int>(extent.nodes_y);
 
   Boundaries boundaries;
   Walls& walls = boundaries.walls;

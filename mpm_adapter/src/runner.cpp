@@ -16,6 +16,7 @@
 #include "acst_mpm/fields.hpp"
 #include "acst_mpm/output.hpp"
 #include "acst_mpm/scatter.hpp"
+#include "acst_mpm/scene_size.hpp"
 
 namespace acst::mpm {
 namespace fs = std::filesystem;
@@ -32,6 +33,9 @@ class Run {
     if (!opt.resume_from.empty()) {
       read_checkpoint(opt.resume_from, scene, sim_, st_);
     }
+    // The run's length needs the first time step, known once the wave speeds are: still
+    // before anything is written.
+    check_run_length(scene, sim_.stable_time_step());
   }
 
   RunSummary run() {

@@ -6,6 +6,7 @@
 #include "acst_common/json_fields.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_mpm/scene.hpp"
+#include "acst_mpm/scene_size.hpp"
 
 namespace acst::mpm {
 namespace f = acst::common::fields;
@@ -38,7 +39,7 @@ void read_materials(const json& j, const std::string& path, const std::string& d
       m.source = "inline";
     }
     try {
-      Material check(m.name, m.json_text);
+      m.state_size = Material(m.name, m.json_text).state_size();
     } catch (const MaterialError& e) {
       f::fail(p, e.what());
     }
@@ -281,8 +282,9 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
     s.stop.S_over_B = f::number(j["stop"]["S_over_B"], "/stop/S_over_B", {0.0, 5.0, true, false});
   }
   if (stop == "time") s.stop.time = f::number(j["stop"]["time"], "/stop/time", f::positive(), "s");
-  if (stop == "steps") s.stop.steps = f::integer(j["stop"]["steps"], "/stop/steps", 1, 2000000000LL);
+  if (stop == "steps") s.stop.steps = f::integer(j["stop"]["steps"], "/stop/steps", 1, static_cast<long long>(max_steps));
   if (j.contains("output")) s.output = read_output(j["output"], "/output", dir);
+  check_scene_size(s);  // the counts in double, before the checks below divide by the cell size
 
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const BodySpec& b = s.bodies[i];

@@ -62,6 +62,9 @@ struct WorkCounters {
   std::atomic<long long> simulation_ns{0};
 };
 
+// A batch of evaluations must fit in the smaller of this and the machine's physical memory.
+inline constexpr double max_memory_bytes = 64.0 * 1024 * 1024 * 1024;
+
 class Problem {
  public:
   explicit Problem(const FitSpec& spec);
@@ -95,6 +98,7 @@ class Problem {
  private:
   SimulationOutcome simulate(const Simulation& sim, const Eigen::VectorXd& theta, bool keep_run) const;
   void assemble(const std::vector<const SimulationOutcome*>& outcomes, Eigen::VectorXd& r) const;
+  void check_size() const;
 
   FitSpec spec_;
   Parameters base_;

@@ -111,6 +111,22 @@ Scene read_scene(const std::string& path);
 // The same from JSON text; `base_dir` resolves relative paths, `default_name` names the output.
 Scene parse_scene(const std::string& json_text, const std::string& base_dir, const std::string& default_name);
 
+// What a scene asks for, counted in double so that no count can overflow before it is checked:
+// the increments (every segment's, times its block's cycles) and the CSV rows (every n-th
+// increment plus every segment's end). parse_scene refuses more than the caps.
+struct SceneSize {
+  double increments = 0.0;
+  double rows = 0.0;
+};
+SceneSize scene_size(const std::vector<Block>& blocks, int every);
+// A run of 1e9 increments takes hours at the driver's speed (docs/element-tests.md); 1e8 rows
+// are some 35 GB of CSV.
+inline constexpr double max_total_increments = 1e9;
+inline constexpr long long max_step_increments = 10000000;  // of one step, or one row of a strain path
+inline constexpr double max_csv_rows = 1e8;
+// Throws common::InputError naming /steps (and the largest block) or /output/every.
+void check_scene_size(const std::vector<Block>& blocks, int every);
+
 // Throws common::InputError if the six rows cannot fix all six strain components with an elastic
 // stiffness of this material (rank < 6), naming the free component; `path` prefixes the message.
 void check_rows_complete(const ControlRows& rows, const Material& material, const std::string& path);

@@ -15,6 +15,7 @@ struct MaterialSpec {
   std::string name;
   std::string json_text;  // {"model", "parameters", ...} for acst_model_create
   std::string source;     // the parameter file, or "inline"
+  int state_size = 0;     // state variables per particle
 };
 
 // A rectangle of soil filled with particles_per_cell^2 particles per cell.

@@ -96,6 +96,8 @@ class Simulation {
   const ContactSummary& contact() const { return contact_; }
   double kinetic_energy() const;
   bool is_xpic_step(long long step) const;
+  // The time step the next step would take (CFL on the wave speeds, and the contact springs).
+  double stable_time_step() const;
 
  private:
   // The steps of step(), in the order docs/mpm.md gives.
@@ -114,7 +116,6 @@ class Simulation {
   void prepare();
   void refresh_wave_speeds();
   double contact_stiffness(std::size_t particle) const;
-  double stable_time_step() const;
   // Velocity = momentum / mass with the constraints applied (0 on nodes without mass).
   void nodal_velocity(const double* px, const double* py, double* vx, double* vy);
   void xpic_velocity(int order);
