@@ -5,11 +5,10 @@
 // double), acst_rotate_state, acst_diagnostics, acst_wave_speed. Checked after every call:
 //   - on any status but ACST_OK the stress and state passed in are unchanged (always);
 //   - ACST_OK means every output is finite and physical: stress, state, tangent, diagnostics and
-//     wave speed finite, and for the sand models void ratio > 0 and p >= 0 (with
-//     ACST_FUZZ_OK_RULE=1 in the environment; off until the ABI keeps this rule).
+//     wave speed finite, and for the sand models void ratio > 0 and p >= 0 (with the CMake
+//     option ACST_FUZZ_OK_RULE, or ACST_FUZZ_OK_RULE=1 in the environment, which overrides it
+//     either way; off until the ABI keeps this rule).
 // A violation aborts, so libFuzzer reports it with the input that caused it.
-#include <fuzzer/FuzzedDataProvider.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include <vector>
 
 #include "acst.h"
+#include "fuzz_bytes.hpp"
 
 namespace {
 
@@ -78,24 +78,24 @@ bool physical_sand(const double* stress, const double* statev) {
   return statev[6] > 0.0 && -(stress[0] + stress[1] + stress[2]) / 3.0 >= 0.0;
 }
 
-double magnitude(FuzzedDataProvider& in, double lo_exp, double hi_exp) {
-  return std::pow(10.0, in.ConsumeFloatingPointInRange(lo_exp, hi_exp));
+double magnitude(acst::fuzz::Bytes& in, double lo_exp, double hi_exp) {
+  return std::pow(10.0, in.in_range(lo_exp, hi_exp));
 }
 
 // A double over many decades, or (one time in eight) any bit pattern: NaN, infinity, denormals.
-double wide(FuzzedDataProvider& in, double lo_exp, double hi_exp) {
-  if (in.ConsumeIntegralInRange(0, 7) == 0) return in.ConsumeFloatingPoint<double>();
-  const double sign = in.ConsumeBool() ? -1.0 : 1.0;
+double wide(acst::fuzz::Bytes& in, double lo_exp, double hi_exp) {
+  if (in.pick(0, 7) == 0) return in.any();
+  const double sign = in.flag() ? -1.0 : 1.0;
   return sign * magnitude(in, lo_exp, hi_exp);
 }
 
-acst_model* linear_or_von_mises(FuzzedDataProvider& in) {
+acst_model* linear_or_von_mises(acst::fuzz::Bytes& in) {
   char json[320];
-  const double E = magnitude(in, -3.0, 9.0), nu = in.ConsumeFloatingPointInRange(-0.99, 0.49);
-  if (in.ConsumeBool()) {
+  const double E = magnitude(in, -3.0, 9.0), nu = in.in_range(-0.99, 0.49);
+  if (in.flag()) {
     std::snprintf(json, sizeof json, R"({"model":"linear_elastic","parameters":{"E":%.17g,"nu":%.17g}})", E, nu);
   } else {
-    const char* key = in.ConsumeBool() ? "yield_stress" : "undrained_shear_strength";
+    const char* key = in.flag() ? "yield_stress" : "undrained_shear_strength";
     std::snprintf(json, sizeof json, R"({"model":"von_mises","parameters":{"E":%.17g,"nu":%.17g,"%s":%.17g}})", E, nu,
                   key, magnitude(in, -3.0, 7.0));
   }
@@ -122,13 +122,13 @@ void check_ok_point(const char* call, const acst_status& s, const Point& p, int 
   if (sand && !physical_sand(p.stress, p.statev)) finding(call, "OK with void ratio <= 0 or p < 0", s);
 }
 
-void initial_state(FuzzedDataProvider& in, const acst_model* m, Point& p, bool sand) {
+void initial_state(acst::fuzz::Bytes& in, const acst_model* m, Point& p, bool sand) {
   const double pc = wide(in, -2.0, 5.0);
   double stress0[6];
-  for (int i = 0; i < 6; ++i) stress0[i] = (i < 3 ? -pc : 0.0) + pc * in.ConsumeFloatingPointInRange(-0.9, 0.9);
-  const double e = in.ConsumeBool() ? in.ConsumeFloatingPointInRange(0.3, 1.3) : wide(in, -3.0, 3.0);
+  for (int i = 0; i < 6; ++i) stress0[i] = (i < 3 ? -pc : 0.0) + pc * in.in_range(-0.9, 0.9);
+  const double e = in.flag() ? in.in_range(0.3, 1.3) : wide(in, -3.0, 3.0);
   double b[3];
-  for (double& x : b) x = in.ConsumeBool() ? in.ConsumeFloatingPointInRange(-1.0, 1.0) : wide(in, -300.0, 300.0);
+  for (double& x : b) x = in.flag() ? in.in_range(-1.0, 1.0) : wide(in, -300.0, 300.0);
   const Point before = p;
   arguments = numbers("stress0", stress0, 6) + numbers("void ratio", &e, 1) + numbers("direction", b, 3);
   const acst_status s = acst_initial_state(p.statev, p.stress, m, stress0, e, b);
@@ -136,16 +136,16 @@ void initial_state(FuzzedDataProvider& in, const acst_model* m, Point& p, bool s
   check_ok_point("acst_initial_state", s, p, acst_state_size(m), sand);
 }
 
-void raw_state(FuzzedDataProvider& in, Point& p, int nstatv) {
+void raw_state(acst::fuzz::Bytes& in, Point& p, int nstatv) {
   for (double& x : p.stress) x = wide(in, -3.0, 6.0);
   for (int i = 0; i < nstatv; ++i) p.statev[i] = wide(in, -3.0, 3.0);
 }
 
-void update(FuzzedDataProvider& in, const acst_model* m, Point& p, bool sand) {
+void update(acst::fuzz::Bytes& in, const acst_model* m, Point& p, bool sand) {
   const double size = wide(in, -12.0, 1.0);
   double d[6];
-  for (double& x : d) x = size * in.ConsumeFloatingPointInRange(-1.0, 1.0);
-  if (in.ConsumeIntegralInRange(0, 15) == 0) d[in.ConsumeIntegralInRange(0, 5)] = in.ConsumeFloatingPoint<double>();
+  for (double& x : d) x = size * in.in_range(-1.0, 1.0);
+  if (in.pick(0, 15) == 0) d[in.pick(0, 5)] = in.any();
   double tangent[36];
   acst_counters counters;
   const Point before = p;
@@ -157,13 +157,13 @@ void update(FuzzedDataProvider& in, const acst_model* m, Point& p, bool sand) {
 }
 
 // A proper rotation from three angles, or (one time in eight) nine arbitrary numbers.
-void rotate(FuzzedDataProvider& in, const acst_model* m, Point& p, bool sand) {
+void rotate(acst::fuzz::Bytes& in, const acst_model* m, Point& p, bool sand) {
   double Q[9];
-  if (in.ConsumeIntegralInRange(0, 7) == 0) {
+  if (in.pick(0, 7) == 0) {
     for (double& x : Q) x = wide(in, -3.0, 1.0);
   } else {
-    const double a = in.ConsumeFloatingPoint<double>(), b = in.ConsumeFloatingPointInRange(-4.0, 4.0),
-                 c = in.ConsumeFloatingPointInRange(-4.0, 4.0);
+    const double a = in.in_range(-4.0, 4.0), b = in.in_range(-4.0, 4.0),
+                 c = in.in_range(-4.0, 4.0);
     const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cc = std::cos(c), sc = std::sin(c);
     const double R[9] = {ca * cb, ca * sb * sc - sa * cc, ca * sb * cc + sa * sc,
                          sa * cb, sa * sb * sc + ca * cc, sa * sb * cc - ca * sc,
@@ -188,7 +188,7 @@ void diagnostics(const acst_model* m, const Point& p, bool sand) {
   if (!finite) finding("acst_diagnostics", "OK with a non-finite diagnostic", s);
 }
 
-void wave_speed(FuzzedDataProvider& in, const acst_model* m, const Point& p) {
+void wave_speed(acst::fuzz::Bytes& in, const acst_model* m, const Point& p) {
   double c = 0.0;
   const double density = wide(in, -1.0, 5.0);
   arguments = numbers("stress", p.stress, 6) + numbers("statev", p.statev, acst_state_size(m)) + numbers("density", &density, 1);
@@ -201,7 +201,7 @@ void wave_speed(FuzzedDataProvider& in, const acst_model* m, const Point& p) {
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   const char* rule = std::getenv("ACST_FUZZ_OK_RULE");
-  ok_rule = rule && std::strcmp(rule, "1") == 0;
+  ok_rule = rule ? std::strcmp(rule, "1") == 0 : ACST_FUZZ_OK_RULE_DEFAULT;
   if (const char* skip = std::getenv("ACST_FUZZ_SKIP")) {
     std::stringstream list(skip);
     for (std::string text; std::getline(list, text, ';');)
@@ -225,18 +225,18 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
-  FuzzedDataProvider in(data, size);
+  acst::fuzz::Bytes in(data, size);
   const int n_sand = static_cast<int>(bundled.sand.size());
-  const int pick = in.ConsumeIntegralInRange(0, n_sand);  // n_sand: a verification kind
+  const int pick = in.pick(0, n_sand);  // n_sand: a verification kind
   acst_model* own = pick == n_sand ? linear_or_von_mises(in) : nullptr;
   const acst_model* m = own ? own : bundled.sand[pick];
   const bool sand = own == nullptr;
   Point p;
-  if (in.ConsumeIntegralInRange(0, 3) == 0) raw_state(in, p, acst_state_size(m));
+  if (in.pick(0, 3) == 0) raw_state(in, p, acst_state_size(m));
   else initial_state(in, m, p, sand);
-  const int calls = in.ConsumeIntegralInRange(1, 12);
-  for (int k = 0; k < calls && in.remaining_bytes() > 0; ++k) {
-    switch (in.ConsumeIntegralInRange(0, 7)) {
+  const int calls = in.pick(1, 12);
+  for (int k = 0; k < calls && in.remaining() > 0; ++k) {
+    switch (in.pick(0, 7)) {
       case 0: rotate(in, m, p, sand); break;
       case 1: diagnostics(m, p, sand); break;
       case 2: wave_speed(in, m, p); break;
