@@ -9,8 +9,9 @@
 //     option ACST_FUZZ_OK_RULE, or ACST_FUZZ_OK_RULE=1 in the environment, which overrides it
 //     either way; off until the ABI keeps this rule).
 // A violation aborts, so libFuzzer reports it with the input that caused it.
+// An input picks its parameter set by its index in name order: adding a set to data/parameters
+// changes what the stored inputs of corpus/fuzz_c_abi mean (they still run, on other models).
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
