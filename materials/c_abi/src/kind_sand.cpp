@@ -9,6 +9,7 @@
 #include "acst/json_input.hpp"
 #include "acst/material.hpp"
 #include "acst/reproducer.hpp"
+#include "acst/yield_function.hpp"
 #include "c_abi_support.hpp"
 #include "model_kind.hpp"
 #include "state_layout.hpp"
@@ -41,13 +42,17 @@ class SandKind final : public ModelKind {
     return ok_status();
   }
 
-  // The checks of Material::update's entry (materials/src/material.cpp), with what failed named.
+  // The checks of Material::update's entry (materials/src/material.cpp), with what failed named,
+  // and no tension.
   std::string state_problem(const double* stress, const double* statev) const override {
     if (const std::string p = ModelKind::state_problem(stress, statev); !p.empty()) return p;
     const State s = state_of(stress, statev);
     if (!void_ratio_admissible(s.void_ratio))
       return "void ratio " + std::to_string(s.void_ratio) + " outside (0, " + std::to_string(void_ratio_limit) + ")";
     if (s.H < 0.0) return "H (state variable 8) is negative";
+    // Sand carries no tension. (An update takes such a state: the integrator's p_min floor deals
+    // with it; the functions that only read a state refuse it.)
+    if (mean_stress(s.stress) < 0.0) return "the mean stress is tensile (p = " + std::to_string(mean_stress(s.stress)) + " kPa)";
     return "";
   }
 
