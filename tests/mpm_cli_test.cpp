@@ -9,6 +9,7 @@
 
 #include "acst_driver/cli.hpp"
 #include "acst_mpm/cli.hpp"
+#include "acst_mpm/output.hpp"
 #include "scratch.hpp"
 
 namespace fs = std::filesystem;
@@ -200,4 +201,18 @@ TEST(MpmCli, ADamagedCheckpointIsRefusedWithExitTwo) {
   EXPECT_EQ(acst::test::everything_under(out), before);
   EXPECT_EQ(text_of(out / "summary.json"), summary);
   fs::remove_all(dir);
+}
+
+// The names a run writes (docs/mpm.md, "Outputs") and nothing else count as an earlier run's.
+TEST(MpmCli, OnlyTheRunsOwnFileNamesCountAsAnEarlierRun) {
+  using acst::mpm::is_run_output_name;
+  for (const char* own : {"load_settlement.csv", "load_settlement.png", "load_settlement.gp", "load_settlement.partial.csv",
+                          "load_settlement.failed.csv", "particles.pvd", "particles_0000.vtp", "particles_12345.vtp",
+                          "summary.json", "checkpoint.bin", "failure_reproducer.json", "shear_strain_SB0.100.png",
+                          "displacement_peak.csv", "shear_strain_peak.gp", ".summary.json.tmp123"})
+    EXPECT_TRUE(is_run_output_name(own)) << own;
+  for (const char* other : {"thesis.tex", "particles_.vtp", "particles_12a.vtp", "particles_0001.vtp.bak", "summary.json~",
+                            "shear_strain_.png", "shear_strain_a b.png", "displacement_x.pdf", "load_settlement.txt",
+                            "previous", ".tmp1", "checkpoint.bin.old"})
+    EXPECT_FALSE(is_run_output_name(other)) << other;
 }

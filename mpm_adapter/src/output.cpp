@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 
 #include "acst_common/files.hpp"
@@ -34,10 +33,26 @@ void scalar_array(std::string& out, const char* name, const std::vector<double>&
 }  // namespace
 
 bool is_run_output_name(const std::string& name) {
-  static const std::regex own(
-      R"((load_settlement(\.partial|\.failed)?\.(csv|png|gp)|particles(_[0-9]+\.vtp|\.pvd)|summary\.json|)"
-      R"(checkpoint\.bin|failure_reproducer\.json|(shear_strain|displacement)_[A-Za-z0-9._-]+\.(png|gp|csv)))");
-  return std::regex_match(name, own) || common::is_temporary_name(name);
+  const auto starts = [&](const std::string& p) { return name.compare(0, p.size(), p) == 0; };
+  const auto ends = [&](const std::string& s) {
+    return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0;
+  };
+  const auto middle = [&](std::size_t head, std::size_t tail, const char* allowed) {
+    return name.size() > head + tail && name.find_first_not_of(allowed, head) >= name.size() - tail;
+  };
+  for (const char* stem : {"load_settlement", "load_settlement.partial", "load_settlement.failed"})
+    for (const char* ext : {".csv", ".png", ".gp"})
+      if (name == std::string(stem) + ext) return true;
+  for (const char* fixed : {"particles.pvd", "summary.json", "checkpoint.bin", "failure_reproducer.json"})
+    if (name == fixed) return true;
+  if (starts("particles_") && ends(".vtp") && middle(10, 4, "0123456789")) return true;
+  for (const char* figure : {"shear_strain_", "displacement_"})
+    for (const char* ext : {".png", ".gp", ".csv"})
+      if (starts(figure) && ends(ext) &&
+          middle(std::string(figure).size(), std::string(ext).size(),
+                 "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._-"))
+        return true;
+  return common::is_temporary_name(name);
 }
 
 std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history) {
