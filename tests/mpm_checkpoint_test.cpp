@@ -6,9 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "acst_common/files.hpp"
 #include "acst_common/input_error.hpp"
 #include "acst_mpm/checkpoint.hpp"
 
@@ -79,11 +79,6 @@ void expect_refused(const std::string& file, const Scene& scene, const std::stri
   EXPECT_EQ(target.step_count(), 0) << "a failed read leaves the simulation untouched";
 }
 
-std::string bytes_of(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 void put_bytes(const std::string& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
 
 TEST(MpmCheckpoint, RejectsAnotherSceneAndTruncatedFiles) {
@@ -117,7 +112,7 @@ TEST(MpmCheckpoint, AnyFlippedByteIsRefused) {
   state.history.push_back(LoadRecord{3, sim.time(), 0.001, 0.003, 2.0, 0.1, 0.0, 6.7, 0.0, 0.01, 0.5});
   const std::string file = (std::filesystem::temp_directory_path() / "acst_mpm_checkpoint_flip.bin").string();
   write_checkpoint(file, scene, sim, state);
-  const std::string good = bytes_of(file);
+  const std::string good = acst::common::read_input_file(file);
   const std::size_t positions = 64;
   for (std::size_t k = 0; k < positions; ++k) {
     std::string bad = good;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "acst_common/files.hpp"
 #include "acst_driver/cli.hpp"
 #include "acst_mpm/cli.hpp"
 #include "acst_mpm/output.hpp"
@@ -133,10 +134,7 @@ void write_elastic_scene(const fs::path& file, int steps) {
     "output": {"checkpoint_every_s": 1e-9}, "stop": {"steps": )" + std::to_string(steps) + "}}";
 }
 
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+std::string text_of(const fs::path& file) { return acst::common::read_input_file(file.string()); }
 
 }  // namespace
 

@@ -79,6 +79,12 @@ std::string temporary_name(const std::string& path) {
   return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
 }
 
+bool is_temporary_name(const std::string& name) {
+  const auto at = name.rfind(".tmp");  // ".NAME.tmpPID", as temporary_name makes it
+  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at == 0 || at + 4 == name.size()) return false;
+  return name.find_first_not_of("0123456789", at + 4) == std::string::npos;
+}
+
 void write_file_atomically(const std::string& path, const std::string& text) {
   AtomicFileWriter file(path);
   file.write(text);

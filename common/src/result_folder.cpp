@@ -15,13 +15,6 @@
 namespace acst::common {
 namespace fs = std::filesystem;
 
-bool is_temporary_name(const std::string& name) {
-  // ".NAME.tmpPID" (common/src/files.cpp)
-  const auto at = name.rfind(".tmp");
-  if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at == 0 || at + 4 == name.size()) return false;
-  return name.find_first_not_of("0123456789", at + 4) == std::string::npos;
-}
-
 namespace {
 
 [[noreturn]] void refuse_entry(const std::string& dir, const std::string& name) {

@@ -76,8 +76,7 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
   if (tangent_out) D = tangent(next, rep.plastic, deps);
   if (!physical(next) || (tangent_out && !D.allFinite())) {
     rep.status = Status::step_reduction_requested;
-    rep.reason = void_ratio_admissible(next.void_ratio) ? integration::Reason::non_finite
-                                                        : integration::Reason::void_ratio_range;
+    rep.reason = integration::Reason::non_finite;  // the integrator already held e and p in range
     rep.suggested_step_factor = 0.5;
     return rep;
   }

@@ -8,7 +8,6 @@
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
 #include "acst_common/one_line.hpp"
-#include "acst_common/result_folder.hpp"
 #include "acst_mpm/fields.hpp"
 
 namespace acst::mpm {

@@ -22,6 +22,8 @@ std::string read_input_file(const std::string& path, std::uintmax_t max_bytes = 
 
 // A hidden temporary name beside `path`, unique to this process.
 std::string temporary_name(const std::string& path);
+// Whether a file name (no folder) is one temporary_name makes.
+bool is_temporary_name(const std::string& name);
 
 // Writes `text` to `path` through a temporary file in the same folder and a rename; throws
 // std::runtime_error naming the file. The old file stays whole if anything fails.

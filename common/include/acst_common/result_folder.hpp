@@ -30,7 +30,4 @@ std::string staging_folder_for(const std::string& dir);
 // briefly absent, never mixed); then removes the earlier set. Throws std::runtime_error.
 void publish_folder(const std::string& staging, const std::string& dir);
 
-// Whether `name` is a temporary file of write_file_atomically (see temporary_name).
-bool is_temporary_name(const std::string& name);
-
 }  // namespace acst::common

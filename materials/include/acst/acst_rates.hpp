@@ -144,19 +144,13 @@ class AcstRates {
   }
 
   // Why y cannot be taken (none: it can): p below the floor, a void ratio out of its range, or
-  // something non-finite.
+  // something non-finite. Only the first is reset to the floor (a free surface, tension,
+  // liquefaction); the others fail the integration: before, all three counted as "below the
+  // floor", and a 60 % compression came back as an isotropic p_min state with e < 0 (issue 14).
   Reason admissibility(const Vector& y) const {
     if (!y.allFinite()) return Reason::non_finite;
     if (!void_ratio_admissible(y[12])) return Reason::void_ratio_range;
     return mean_stress(stress(y)) >= prm_.p_min ? Reason::none : Reason::pressure_floor;
-  }
-
-  // The floor catches points whose mean stress the path takes below p_min (a free surface,
-  // tension, liquefaction): only where p is all that is wrong. A void ratio out of its range or a
-  // non-finite value is a failed integration, never a reset: before, both counted as "below
-  // the floor", and a 60 % compression came back as an isotropic p_min state with e < 0 (issue 14).
-  bool may_reset_to_pressure_floor(const Vector& y, const Sym&) const {
-    return y.allFinite() && void_ratio_admissible(y[12]);
   }
 
   void reset_to_pressure_floor(Vector& y, double& H) const {

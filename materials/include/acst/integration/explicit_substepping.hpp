@@ -11,7 +11,6 @@
 //   double relative_error(const Vector& y_new, const Vector& error) const;
 //   double hardening_memory(const Vector& y, const Sym& deps) const;   exact drift correction
 //   Reason admissibility(const Vector& y) const;                   none where y may be taken
-//   bool   may_reset_to_pressure_floor(const Vector& y, const Sym& deps) const;
 //   void   reset_to_pressure_floor(Vector& y, double& H) const;
 // Rates are per unit pseudo-time T in [0, 1] for the whole strain increment deps.
 #include <algorithm>
@@ -41,14 +40,14 @@ class ExplicitSubstepping {
     const double f_trial = model_.yield_value(trial.y, H, deps);
     if (f_trial <= opt_.ftol) {
       y = trial.error <= opt_.stol ? trial.y : elastic_update(y, deps, rep.counters);
-      return finish(y, H, rep, Reason::none, deps);
+      return finish(y, H, rep, Reason::none);
     }
     const double alpha = elastic_fraction(y, H, deps, trial.y, f_trial, rep.counters);
     if (alpha > 0.0) y = elastic_update(y, alpha * deps, rep.counters);
     const Sym plastic_part = (1.0 - alpha) * deps;
     const Reason r = opt_.scheme == Scheme::forward_euler ? forward_euler(y, H, plastic_part, rep)
                                                           : adaptive(y, H, substep_hint, plastic_part, rep);
-    return finish(y, H, rep, r, deps);
+    return finish(y, H, rep, r);
   }
 
  private:
@@ -241,10 +240,11 @@ class ExplicitSubstepping {
     return Reason::none;
   }
 
-  Report finish(Vector& y, double& H, Report& rep, Reason r, const Sym& deps) const {
+  // A pressure-floor failure is reset (where the policy says so) only when p is all that is wrong:
+  // the model's admissibility names a void ratio out of range or a non-finite value otherwise.
+  Report finish(Vector& y, double& H, Report& rep, Reason r) const {
     if (r == Reason::none) r = model_.admissibility(y);
-    if (r == Reason::pressure_floor && opt_.pressure_floor == PressureFloorPolicy::reset &&
-        model_.may_reset_to_pressure_floor(y, deps)) {
+    if (r == Reason::pressure_floor && opt_.pressure_floor == PressureFloorPolicy::reset) {
       model_.reset_to_pressure_floor(y, H);
       ++rep.counters.pressure_floor_resets;
       r = Reason::none;
