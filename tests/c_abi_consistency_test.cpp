@@ -389,10 +389,10 @@ TEST(CAbiConsistency, UmatPressureFloorFailOptionRequestsStepReduction) {
   for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(stress[i], -p_min);
   props.back() = 0.5;  // neither 0 nor 1
   umat(stress, statev, extension, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
 }
 
-TEST(CAbiConsistency, UmatRejectsBadNtensAndShortPropsWithPnewdtZero) {
+TEST(CAbiConsistency, UmatRejectsBadNtensAndShortPropsAsUnrecoverable) {
   const std::string text = acst::test::read_text(guide_path);
   const std::vector<double> props = props_from_json(text);
   ModelHandle h(text);
@@ -407,23 +407,23 @@ TEST(CAbiConsistency, UmatRejectsBadNtensAndShortPropsWithPnewdtZero) {
     EXPECT_EQ(std::vector<double>(statev, statev + ACST_NSTATV), statev_before);
   };
   umat(stress, statev, d.data(), 3, ACST_NSTATV, props.data(), static_cast<int>(props.size()));  // NTENS 3
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   untouched();
   umat(stress, statev, d.data(), 6, ACST_NSTATV, props.data(), 17);  // one constant short
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   untouched();
   umat(stress, statev, d.data(), 6, ACST_NSTATV - 1, props.data(), static_cast<int>(props.size()));  // NSTATV short
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   untouched();
   std::vector<double> bad = props;
   bad[1] = 0.7;  // nu out of range
   umat(stress, statev, d.data(), 6, ACST_NSTATV, bad.data(), static_cast<int>(bad.size()));
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   untouched();
   bad = props;
   bad[18] = 7;  // no such scheme
   umat(stress, statev, d.data(), 6, ACST_NSTATV, bad.data(), static_cast<int>(bad.size()));
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   untouched();
   // Sanity: the same call with good arguments succeeds, so the rejections above were the arguments'.
   umat(stress, statev, d.data(), 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
@@ -524,6 +524,6 @@ TEST(CAbiConsistency, UmatTurnsTheFabricWithDrotAndGivesTheRotatedAnswer) {
   std::copy(stress, stress + 6, s_bad);
   std::copy(statev, statev + ACST_NSTATV, q_bad);
   umat(s_bad, q_bad, dstran, 6, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
-  EXPECT_EQ(umat.pnewdt, 0.0);
+  EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   for (int i = 0; i < ACST_NSTATV; ++i) EXPECT_EQ(q_bad[i], statev[i]);
 }

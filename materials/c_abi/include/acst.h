@@ -162,9 +162,26 @@ acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* mode
 acst_status acst_umat_reproducer(char* buffer, size_t* length, const double* stress, const double* statev,
                                  const double* dstran, int ntens, const double* props, int nprops, const double* drot);
 
+/* umat_'s work, with its status: what umat_ does to STRESS, STATEV, DDSDDE and PNEWDT, and the
+ * reason of a failure in the returned status (umat_ itself has no way to say it). A host glue
+ * that can print (the CalculiX glue of materials/calculix/) calls this and reports the message.
+ * The failure protocol that umat_ follows (docs/c-abi.md, "umat_ and its hosts"):
+ *   - a good update leaves PNEWDT as it came;
+ *   - a step reduction sets PNEWDT to a factor in [0.01, 0.9]: the suggested factor, or a smaller
+ *     request already in PNEWDT (PNEWDT <= 0 on entry means "no request yet", as CalculiX passes -1);
+ *   - an unrecoverable failure (bad PROPS, NTENS or NSTATV, a non-physical state on entry, a
+ *     non-finite strain) sets ACST_UMAT_UNRECOVERABLE_PNEWDT, so the host cuts back below its
+ *     minimum increment and stops with its own message;
+ *   - on any failure STRESS and STATEV are unchanged and DDSDDE holds a finite, positive definite
+ *     elastic tangent of the start state (NTENS x NTENS, column-major); only an NTENS other than
+ *     6 or 4 or a NULL array leaves DDSDDE unwritten (its size is unknown). */
+#define ACST_UMAT_UNRECOVERABLE_PNEWDT 1e-6
+acst_status acst_umat(double* stress, double* statev, double* ddsdde, const double* dstran, int ntens, int nstatv,
+                      const double* props, int nprops, const double* drot, double* pnewdt);
+
 /* Abaqus-compatible entry point for the ACST model only (standard UMAT argument list; see
- * docs/c-abi.md for the PROPS and STATEV layouts). NTENS = 6 (3-D) or 4 (plane strain / axisymmetric: 11, 22, 33, 12).
- * Failures set PNEWDT = suggested step factor (< 1) and leave STRESS and STATEV unchanged. */
+ * docs/c-abi.md for the PROPS and STATEV layouts). NTENS = 6 (3-D) or 4 (plane strain /
+ * axisymmetric: 11, 22, 33, 12). The failure protocol is acst_umat's (above). */
 void umat_(double* stress, double* statev, double* ddsdde, double* sse, double* spd, double* scd, double* rpl,
            double* ddsddt, double* drplde, double* drpldt, const double* stran, const double* dstran,
            const double* time, const double* dtime, const double* temp, const double* dtemp, const double* predef,

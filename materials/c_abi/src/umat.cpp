@@ -11,9 +11,10 @@
 // STATEV(1..10): as acst_state_name (F11..F23, void ratio, H, substep hint, floor resets);
 // the host initialises them (acst_initial_state gives the values).
 // NTENS 6 (11 22 33 12 13 23) or 4 (11 22 33 12). Abaqus convention: tension positive,
-// engineering shear strain, DDSDDE column-major.
+// engineering shear strain, DDSDDE column-major. Failures follow the protocol in acst.h (acst_umat).
 #include <Eigen/LU>  // determinant of DROT
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <string>
 
@@ -80,7 +81,89 @@ UmatPoint umat_point(const double* stress, const double* statev, const double* d
   return u;
 }
 
+// DDSDDE of a failed call (docs/c-abi.md, "umat_ and its hosts"): the elastic tangent of the
+// start state, with p raised to p_min and a void ratio outside (0, 2.97) read as 1, so it is
+// finite and positive definite whatever the state; from PROPS that do not form a material, a
+// nominal isotropic stiffness (G = K = 1000 p_atm). Some hosts assemble DDSDDE even after a
+// cut-back request, and CalculiX hands over an uninitialised matrix.
+void write_fallback_tangent(double* ddsdde, int nt, const double* stress, const double* statev, int nstatv,
+                            const double* props, int nprops) {
+  acst::ElasticModuli mod{1000.0 * acst::atmospheric_pressure, 1000.0 * acst::atmospheric_pressure};
+  if (props && nprops >= acst::parameter_count) {
+    acst::Parameters p;
+    for (int i = 0; i < acst::parameter_count; ++i) acst::parameter_by_index(p, i) = props[i];
+    double e = statev && nstatv >= ACST_NSTATV ? statev[acst::abi::slot_void_ratio] : 1.0;
+    if (!acst::void_ratio_admissible(e)) e = 1.0;
+    double mean = 0.0;
+    for (int i = 0; i < 3 && stress; ++i) mean -= stress[i] / 3.0;  // tension positive here
+    const double p_min = std::isfinite(p.p_min) && p.p_min > 0.0 ? p.p_min : 1.0;
+    const acst::ElasticModuli m = acst::elastic_moduli(p, e, std::isfinite(mean) ? std::max(mean, p_min) : p_min);
+    if (std::isfinite(m.G) && std::isfinite(m.K) && m.G > 0.0 && m.K > 0.0) mod = m;
+  }
+  double tangent[36];
+  acst::abi::tangent_from_model(acst::elastic_stiffness(mod), tangent);
+  for (int i = 0; i < nt; ++i)
+    for (int j = 0; j < nt; ++j) ddsdde[i + j * nt] = tangent[6 * i + j];
+}
+
+// PNEWDT after a failure: a factor in (0, 1). A host that has not asked for anything yet passes
+// PNEWDT <= 0 (CalculiX: -1) or >= 1 (Abaqus: a large value); a smaller request already made at
+// another point of the same increment is kept.
+void request_cut_back(double* pnewdt, double factor) {
+  if (!pnewdt) return;
+  *pnewdt = *pnewdt > 0.0 ? std::min(*pnewdt, factor) : factor;
+}
+
+acst_status checked_umat(double* stress, double* statev, double* ddsdde, const double* dstran, int nt, int nstatv,
+                         const double* props, int nprops, const double* drot) {
+  using acst::abi::make_status;
+  if (nstatv < ACST_NSTATV || nprops < acst::parameter_count)
+    return make_status(ACST_INVALID_INPUT,
+                       "umat_: NSTATV must be at least " + std::to_string(ACST_NSTATV) + " and NPROPS at least " +
+                           std::to_string(acst::parameter_count) + " (got " + std::to_string(nstatv) + " and " +
+                           std::to_string(nprops) + ")",
+                       1.0);
+  // The update works on a copy of the state, so a failure leaves STATEV as it came.
+  UmatPoint u = umat_point(stress, statev, dstran, nt, props, nprops, drot);
+  double tangent[36];
+  acst::integration::Report rep;
+  const acst_status st = acst::abi::update_point(u.stress, u.state, tangent, u.material, u.dstrain, rep);
+  if (st.code != ACST_OK) return st;
+  std::copy(u.state, u.state + ACST_NSTATV, statev);
+  std::copy(u.stress, u.stress + nt, stress);
+  for (int i = 0; i < nt; ++i)
+    for (int j = 0; j < nt; ++j) ddsdde[i + j * nt] = tangent[6 * i + j];
+  return st;
+}
+
 }  // namespace
+
+extern "C" acst_status acst_umat(double* stress, double* statev, double* ddsdde, const double* dstran, int ntens,
+                                 int nstatv, const double* props, int nprops, const double* drot, double* pnewdt) {
+  using acst::abi::make_status;
+  // DDSDDE's size is unknown, or an array is missing: nothing but PNEWDT can be written.
+  const char* unusable = ntens != 6 && ntens != 4                                  ? "NTENS must be 6 or 4"
+                         : !stress || !statev || !ddsdde || !dstran || !props ? "a required array argument is NULL"
+                                                                                 : nullptr;
+  if (unusable) {
+    request_cut_back(pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
+    return make_status(ACST_INVALID_INPUT, std::string("umat_: ") + unusable + " (NTENS " + std::to_string(ntens) + ")", 1.0);
+  }
+  if (!pnewdt) return make_status(ACST_INVALID_INPUT, "umat_: PNEWDT is NULL", 1.0);
+  acst_status st;
+  try {
+    st = checked_umat(stress, statev, ddsdde, dstran, ntens, nstatv, props, nprops, drot);
+  } catch (const std::exception& e) {
+    st = make_status(ACST_INVALID_INPUT, std::string("umat_: ") + e.what(), 1.0);
+  } catch (...) {
+    st = make_status(ACST_INTERNAL_ERROR, "umat_: unknown exception", 1.0);
+  }
+  if (st.code == ACST_OK) return st;  // PNEWDT stays as it came
+  write_fallback_tangent(ddsdde, ntens, stress, statev, nstatv, props, nprops);
+  request_cut_back(pnewdt, st.code == ACST_STEP_REDUCTION ? std::clamp(st.suggested_step_factor, 0.01, 0.9)
+                                                          : ACST_UMAT_UNRECOVERABLE_PNEWDT);
+  return st;
+}
 
 extern "C" void umat_(double* stress, double* statev, double* ddsdde, double*, double*, double*, double*, double*,
                       double*, double*, const double*, const double* dstran, const double*, const double*,
@@ -88,31 +171,11 @@ extern "C" void umat_(double* stress, double* statev, double* ddsdde, double*, d
                       const int*, const int* ntens, const int* nstatv, const double* props, const int* nprops,
                       const double*, const double* drot, double* pnewdt, const double*, const double*, const double*,
                       const int*, const int*, const int*, const int*, const int*, const int*, size_t) {
-  // A failure that no smaller time step can fix: PNEWDT = 0 tells the host to stop cutting back.
-  constexpr double unrecoverable = 0.0;
-  try {
-    const int nt = ntens ? *ntens : 0;
-    if ((nt != 6 && nt != 4) || !nstatv || *nstatv < ACST_NSTATV || !nprops || *nprops < acst::parameter_count ||
-        !stress || !statev || !ddsdde || !dstran || !props || !pnewdt) {
-      if (pnewdt) *pnewdt = unrecoverable;
-      return;
-    }
-    // The update works on a copy of the state, so a failure leaves STATEV as it came.
-    UmatPoint u = umat_point(stress, statev, dstran, nt, props, *nprops, drot);
-    double tangent[36];
-    acst::integration::Report rep;
-    const acst_status st = acst::abi::update_point(u.stress, u.state, tangent, u.material, u.dstrain, rep);
-    if (st.code != ACST_OK) {
-      *pnewdt = st.code == ACST_STEP_REDUCTION ? std::min(*pnewdt, st.suggested_step_factor) : unrecoverable;
-      return;
-    }
-    std::copy(u.state, u.state + ACST_NSTATV, statev);
-    std::copy(u.stress, u.stress + nt, stress);
-    for (int i = 0; i < nt; ++i)
-      for (int j = 0; j < nt; ++j) ddsdde[i + j * nt] = tangent[6 * i + j];
-  } catch (...) {
-    if (pnewdt) *pnewdt = unrecoverable;
+  if (!ntens || !nstatv || !nprops) {
+    request_cut_back(pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
+    return;
   }
+  acst_umat(stress, statev, ddsdde, dstran, *ntens, *nstatv, props, *nprops, drot, pnewdt);
 }
 
 extern "C" acst_status acst_umat_reproducer(char* buffer, size_t* length, const double* stress, const double* statev,
