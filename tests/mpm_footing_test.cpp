@@ -262,4 +262,16 @@ TEST(FootingContact, EachParticleLeavesThroughTheFaceItPenetratesLeast) {
   const ContactForce corner_below = push(1.52, 1.99);  // centre below the base beside it: 0.03 from the side, 0.04 from the base
   EXPECT_NEAR(corner_below.penetration, 0.03, 1e-12);
   EXPECT_GT(corner_below.fx, 0.0);
+  // A domain flattened at the corner (0.16 wide, 0.008 high) beside the right face: as the base
+  // passes its centre it stays on the base face, 0.05 into the side but only a few mm into the
+  // base, and its penetration changes by the distance moved, not by the side's 0.05.
+  const auto flat = [&](double y) {
+    double friction = 0.0;
+    return f.contact(ContactParticle{1.53, y, 0.0, 0.0, 0.08, 0.004, 1.0, 1e6}, friction, 1e-4);
+  };
+  const ContactForce flat_below = flat(1.999), flat_above = flat(2.001);
+  EXPECT_NEAR(flat_below.penetration, 0.003, 1e-12);
+  EXPECT_NEAR(flat_above.penetration, 0.005, 1e-12);
+  EXPECT_LT(flat_above.fy, 0.0);
+  EXPECT_EQ(flat_above.fx, 0.0);
 }
