@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "acst_mpm/particle_track.hpp"
 #include "acst_mpm/scene.hpp"
 #include "acst_mpm/scene_size.hpp"
 
@@ -28,6 +29,32 @@ double column_top(const Scene& s, double x) {
   for (const BodySpec& b : s.bodies)
     if (x >= b.x_min && x <= b.x_max) top = std::max(top, b.y_max);
   return top;
+}
+
+// The particle nearest each output/particle_histories position: it must be a sand's and lie
+// within a cell of the position (a position outside the soil, or in the half a symmetric run
+// leaves out, is an error, not the nearest particle far away).
+void follow_particles(const Scene& s, const std::vector<std::shared_ptr<const Material>>& materials, Particles& P) {
+  const auto& tracks = s.output.particle_histories;
+  P.tracked.clear();
+  P.track_frame.assign(track_frame_size * tracks.size(), 0.0);
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    const std::string at = "/output/particle_histories/" + std::to_string(k) + "/at";
+    std::size_t best = 0;
+    double best_d2 = INFINITY;
+    for (std::size_t p = 0; p < P.n; ++p) {
+      const double d2 = std::pow(P.x[p] - tracks[k].x, 2) + std::pow(P.y[p] - tracks[k].y, 2);
+      if (d2 < best_d2) best = p, best_d2 = d2;
+    }
+    if (!(best_d2 <= s.cell_size * s.cell_size))
+      throw common::InputError(at + ": no particle within a cell (" + std::to_string(s.cell_size) + " m) of (" +
+                               std::to_string(tracks[k].x) + ", " + std::to_string(tracks[k].y) +
+                               ") m in the modelled soil");
+    if (!materials[static_cast<std::size_t>(P.material[best])]->is_sand())
+      throw common::InputError(at + ": the particle there is not of a sand material (its history needs fabric, void ratio and H)");
+    P.tracked.push_back(static_cast<int>(best));
+    P.track_frame[track_frame_size * k] = 1.0;  // cos of no rotation yet
+  }
 }
 
 }  // namespace
@@ -133,6 +160,7 @@ Simulation build_simulation(const Scene& scene) {
         if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = d;
       }
   }
+  follow_particles(s, materials, P);
   return Simulation(grid, boundaries, s.solver, std::move(materials), std::move(P), 0.5 / ppc);
 }
 

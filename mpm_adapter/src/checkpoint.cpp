@@ -16,7 +16,7 @@ constexpr std::uintmax_t max_checkpoint_bytes = std::uintmax_t{16} << 30;
 
 // Layout (docs/mpm.md, "Checkpoints"): magic, scene text, material records, particle arrays, run
 // fields, then the FNV-1a checksum of everything before it.
-constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '3'};
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '4'};
 constexpr std::size_t checksum_bytes = sizeof(std::uint64_t);
 
 struct Writer {
@@ -86,9 +86,11 @@ template <class P, class F>
 void particle_arrays(P& particles, F&& f) {
   auto& p = particles;
   for (auto* v : {&p.x, &p.y, &p.x_initial, &p.y_initial, &p.vx, &p.vy, &p.mass, &p.weight_mass, &p.volume_initial,
-                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.wave_speed, &p.contact_friction})
+                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.wave_speed, &p.contact_friction,
+                  &p.track_frame})
     f(*v);
   f(p.material);
+  f(p.tracked);
 }
 
 template <class IO, class C, class M, class State>
@@ -113,12 +115,21 @@ void run_fields(IO& io, C& clock, M& motion, State& st) {
   io.pod(st.peak.S_over_B);
   io.pod(st.peak.V_kN_per_m);
   for (auto* v : {&st.peak.x, &st.peak.y, &st.peak.shear_strain, &st.peak.displacement}) io.vec(*v);
+  io.vec(st.tracks);
 }
 
 bool all_finite(const std::vector<double>& v) {
   for (const double x : v)
     if (!std::isfinite(x)) return false;
   return true;
+}
+
+bool track_finite(const TrackRecord& t) {
+  bool finite = std::isfinite(t.time) && std::isfinite(t.S_over_B) && std::isfinite(t.x) && std::isfinite(t.y) &&
+                std::isfinite(t.rotation_rad) && std::isfinite(t.void_ratio) && std::isfinite(t.H) && t.step >= 0;
+  for (const double* v : {t.strain, t.strain + 1, t.strain + 2}) finite = finite && std::isfinite(*v);
+  for (int i = 0; i < 6; ++i) finite = finite && std::isfinite(t.stress[i]) && std::isfinite(t.fabric[i]);
+  return finite;
 }
 
 bool record_finite(const LoadRecord& r) {
@@ -140,6 +151,7 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
     if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::vector<double>>)
       if (!all_finite(v)) r.refuse("holds a non-finite particle value");
   });
+  if (P.tracked != sim.particles().tracked) r.refuse("follows other particles than the scene's particle_histories");
   const Grid& g = sim.grid();
   const double x_max = g.x0 + (g.nx - 1) * g.h, y_max = g.y0 + (g.ny - 1) * g.h;
   for (std::size_t p = 0; p < P.n; ++p) {
@@ -170,6 +182,9 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
     r.refuse("holds a non-finite peak");
   for (const auto* v : {&st.peak.x, &st.peak.y, &st.peak.shear_strain, &st.peak.displacement})
     if (!all_finite(*v)) r.refuse("holds a non-finite peak snapshot");
+  for (const TrackRecord& t : st.tracks)
+    if (t.track < 0 || static_cast<std::size_t>(t.track) >= P.tracked.size() || !track_finite(t))
+      r.refuse("holds an impossible particle-history row");
 }
 
 }  // namespace

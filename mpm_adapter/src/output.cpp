@@ -1,6 +1,7 @@
 #include "acst_mpm/output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
 #include "acst_common/one_line.hpp"
+#include "acst_common/plain_stem.hpp"
 #include "acst_mpm/fields.hpp"
 
 namespace acst::mpm {
@@ -17,7 +19,7 @@ namespace {
 
 void put(std::string& out, double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
+  std::snprintf(buf, sizeof buf, "%.10g", v + 0.0);  // + 0.0: -0 is written 0
   out += buf;
 }
 
@@ -45,6 +47,7 @@ bool is_run_output_name(const std::string& name) {
   for (const char* fixed : {"particles.pvd", "summary.json", "checkpoint.bin", "failure_reproducer.json"})
     if (name == fixed) return true;
   if (starts("particles_") && ends(".vtp") && middle(10, 4, "0123456789")) return true;
+  if (starts("particle_") && ends(".csv") && common::is_plain_stem(name.substr(9, name.size() - 13))) return true;
   for (const char* figure : {"shear_strain_", "displacement_"})
     for (const char* ext : {".png", ".gp", ".csv"})
       if (starts(figure) && ends(ext) &&
@@ -69,6 +72,35 @@ std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& his
                      r.penetration_m, r.kinetic_J_per_m, r.footing_work_J_per_m})
       put(out, v), out += ',';
     put(out, r.footing_work_J_per_m > 0.0 ? r.kinetic_J_per_m / r.footing_work_J_per_m : 0.0);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string track_csv_text(const Scene& scene, int k, const std::vector<TrackRecord>& rows) {
+  const ParticleTrack& t = scene.output.particle_histories[static_cast<std::size_t>(k)];
+  std::string out = "# acst_mpm history of particle '" + common::one_line(t.name) + "' of scene '" +
+                    common::one_line(scene.name) + "', the one nearest (" + std::to_string(t.x) + ", " +
+                    std::to_string(t.y) + ") m at the start\n";
+  out += "# material frame (the particle's frame at the start, turned with it), test-frame axes of acst_element: "
+         "1 = vertical (y), 2 = out of plane (z), 3 = horizontal (x); compression positive, kPa, strains in % "
+         "since the start (engineering shear); x_m, y_m: the particle's position now; rotation_deg: its "
+         "accumulated rotation (counter-clockwise)\n";
+  out += "step,time_s,S_over_B,x_m,y_m,rotation_deg,eps_11_pct,eps_22_pct,eps_33_pct,gamma_12_pct,gamma_13_pct,"
+         "gamma_23_pct,sigma_11_kPa,sigma_22_kPa,sigma_33_kPa,sigma_12_kPa,sigma_13_kPa,sigma_23_kPa,void_ratio,"
+         "F11,F22,F33,F12,F13,F23,H\n";
+  // (x, y, z) -> (3, 1, 2): test 11 = yy, 22 = zz, 33 = xx, 12 = yz, 13 = yx, 23 = zx.
+  constexpr int from[6] = {1, 2, 0, 5, 3, 4};
+  for (const TrackRecord& r : rows) {
+    if (r.track != k) continue;
+    out += std::to_string(r.step);
+    for (double v : {r.time, r.S_over_B, r.x, r.y, r.rotation_rad * 180.0 / M_PI}) out += ',', put(out, v);
+    const double strain[6] = {-100.0 * r.strain[1], 0.0, -100.0 * r.strain[0], 0.0, -200.0 * r.strain[2], 0.0};
+    for (double v : strain) out += ',', put(out, v);
+    for (int i : from) out += ',', put(out, -r.stress[i]);
+    out += ',', put(out, r.void_ratio);
+    for (int i : from) out += ',', put(out, r.fabric[i]);
+    out += ',', put(out, r.H);
     out += '\n';
   }
   return out;

@@ -32,6 +32,8 @@ class Run {
     st_.contours_done.assign(scene.output.contours_at_S_over_B.size(), 0);
     if (!opt.resume_from.empty()) {
       read_checkpoint(opt.resume_from, scene, sim_, st_);
+    } else {
+      record_tracks();  // the start of every history: the replay's initial state
     }
     // The run's length needs the first time step, known once the wave speeds are: still
     // before anything is written.
@@ -69,6 +71,7 @@ class Run {
     } catch (const SimulationError& e) {
       progress_.close();
       common::write_file_atomically(path("load_settlement.failed.csv"), load_csv_text(scene_, rows()));
+      write_tracks();
       if (e.reproducer.empty()) throw;
       common::write_file_atomically(path("failure_reproducer.json"), e.reproducer);
       throw SimulationError(std::string(e.what()) + "\n(wrote " + path("failure_reproducer.json") +
@@ -135,7 +138,10 @@ class Run {
     st_.sum_H += H;
     st_.sum_M += M;
     st_.max_penetration = std::max(st_.max_penetration, depth);
-    if (scene_.output.every_step_csv) st_.every_step.push_back(current(V, H, M, depth));
+    if (scene_.output.every_step_csv) {
+      st_.every_step.push_back(current(V, H, M, depth));
+      record_tracks();  // the histories follow the load record's rows: every step here
+    }
     if (++st_.period_steps == scene_.solver.xpic_every) close_period();
   }
 
@@ -147,6 +153,7 @@ class Run {
       throw SimulationError(quasi_static_message(r) + " (quasi_static/on_excess 'stop')");
     st_.sum_V = st_.sum_H = st_.sum_M = st_.max_penetration = 0.0;
     st_.period_steps = 0;
+    if (!scene_.output.every_step_csv) record_tracks();
     if (scene_.footing && r.V_kN_per_m > st_.peak.V_kN_per_m) {
       Snapshot& s = st_.peak;
       s.S_over_B = r.S_over_B;
@@ -161,6 +168,17 @@ class Run {
         s.displacement[i] = std::hypot(P.x[i] - P.x_initial[i], P.y[i] - P.y_initial[i]);
       }
     }
+  }
+
+  void record_tracks() {
+    for (std::size_t k = 0; k < sim_.particles().tracked.size(); ++k)
+      st_.tracks.push_back(track_record(sim_, static_cast<int>(k), S_over_B()));
+  }
+
+  void write_tracks() const {
+    for (std::size_t k = 0; k < scene_.output.particle_histories.size(); ++k)
+      common::write_file_atomically(path("particle_" + scene_.output.particle_histories[k].name + ".csv"),
+                                    track_csv_text(scene_, static_cast<int>(k), st_.tracks));
   }
 
   bool due_frame() const {
@@ -236,6 +254,7 @@ class Run {
   void write_results(RunSummary& sum) {
     common::write_file_atomically(path("load_settlement.csv"), load_csv_text(scene_, rows()));
     std::remove(path("load_settlement.partial.csv").c_str());
+    write_tracks();
     if (!st_.history.empty()) sum.residual_V = st_.history.back().V_kN_per_m;
     sum.Q_ult = st_.peak.V_kN_per_m;
     sum.S_ult_over_B = st_.peak.S_over_B;

@@ -165,9 +165,33 @@ QuasiStaticSpec read_quasi_static(const json& j, const std::string& p) {
   return q;
 }
 
+// [{"name": STEM, "at": [x, y]}, ...]: each name becomes particle_NAME.csv.
+std::vector<ParticleTrack> read_particle_histories(const json& j, const std::string& p) {
+  if (!j.is_array()) f::fail(p, "expected an array of {\"name\": ..., \"at\": [x, y]}");
+  if (j.size() > max_particle_histories)
+    f::fail(p, std::to_string(j.size()) + " particles: at most " + std::to_string(max_particle_histories));
+  std::vector<ParticleTrack> tracks;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string at = p + "/" + std::to_string(i);
+    f::object(j[i], at);
+    f::allow_keys(j[i], {"name", "at"}, at);
+    if (!j[i].contains("name")) f::fail(at + "/name", "required: a plain stem naming the particle's file");
+    if (!j[i].contains("at")) f::fail(at + "/at", "required: [x, y] in m, the particle's position at the start");
+    ParticleTrack t;
+    t.name = common::require_plain_stem(f::string(j[i]["name"], at + "/name"), at + "/name");
+    for (const ParticleTrack& other : tracks)
+      if (other.name == t.name) f::fail(at + "/name", "'" + t.name + "' names two particles");
+    const auto xy = f::numbers(j[i]["at"], at + "/at", 2, "x, y in m");
+    t.x = xy[0];
+    t.y = xy[1];
+    tracks.push_back(t);
+  }
+  return tracks;
+}
+
 OutputSpec read_output(const json& j, const std::string& p, const std::string& dir) {
   f::allow_keys(j, {"vtk_every_S_over_B", "vtk_every_time", "contours_at_S_over_B", "contours_at_peak", "lab_curve",
-                    "lab_label", "checkpoint_every_s", "every_step_csv"},
+                    "lab_label", "checkpoint_every_s", "every_step_csv", "particle_histories"},
                 p);
   OutputSpec o;
   if (j.contains("vtk_every_S_over_B"))
@@ -189,6 +213,7 @@ OutputSpec read_output(const json& j, const std::string& p, const std::string& d
   if (j.contains("checkpoint_every_s"))
     o.checkpoint_every_s = f::number(j["checkpoint_every_s"], p + "/checkpoint_every_s", {0.0, 1e6}, "s");
   if (j.contains("every_step_csv")) o.every_step_csv = f::boolean(j["every_step_csv"], p + "/every_step_csv");
+  if (j.contains("particle_histories")) o.particle_histories = read_particle_histories(j["particle_histories"], p + "/particle_histories");
   return o;
 }
 

@@ -7,6 +7,7 @@
 #include "acst_common/json_fields.hpp"
 #include "acst_common/memory.hpp"
 #include "acst_common/parallel_for.hpp"
+#include "acst_mpm/particle_track.hpp"
 #include "acst_mpm/runner.hpp"
 
 namespace acst::mpm {
@@ -101,7 +102,9 @@ SceneSize scene_size(const Scene& scene, double steps) {
   size.bytes_per_node = bytes_per_node(common::thread_count(s.solver.threads));
   size.bytes_per_particle = bytes_per_particle(state_size, s.footing.has_value());
   size.record_rows = steps / s.solver.xpic_every + (s.output.every_step_csv ? steps : 0.0);
-  size.bytes_per_row = bytes_per_record_row;
+  // Each followed particle adds a history row (kept, and its CSV line of 27 numbers) per record row.
+  size.bytes_per_row = bytes_per_record_row +
+                       static_cast<double>(s.output.particle_histories.size()) * (sizeof(TrackRecord) + 27.0 * 17);
   return size;
 }
 

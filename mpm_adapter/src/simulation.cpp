@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "acst_mpm/particle_track.hpp"
 #include "acst_mpm/shape_functions.hpp"
 
 namespace acst::mpm {
@@ -215,6 +216,14 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   });
   for (int t = 0; t < T; ++t)
     if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
+  // The followed particles' frames (a handful: outside the loop above, which stays as it was).
+  for (std::size_t k = 0; k < P.tracked.size(); ++k) {
+    double L[4] = {0.0, 0.0, 0.0, 0.0};
+    w.stencil(static_cast<std::size_t>(P.tracked[k]), [&](std::size_t i, double, double gx, double gy) {
+      L[0] += vx[i] * gx, L[1] += vx[i] * gy, L[2] += vy[i] * gx, L[3] += vy[i] * gy;
+    });
+    follow_track(&P.track_frame[track_frame_size * k], L, dt_half);
+  }
 }
 
 void Simulation::xpic_velocity(int order) {

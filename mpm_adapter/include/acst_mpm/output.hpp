@@ -14,6 +14,10 @@ namespace acst::mpm {
 bool is_run_output_name(const std::string& name);
 
 std::string load_csv_text(const Scene& scene, const std::vector<LoadRecord>& history);
+// The history of one particle as the CSV acst_element's strain_path_csv and the replay script
+// read: the test frame there is axis 1 = y (vertical), 2 = z (out of plane), 3 = x, compression
+// positive, strains in percent with engineering shear. The one place that conversion is made.
+std::string track_csv_text(const Scene& scene, int k, const std::vector<TrackRecord>& rows);
 std::string vtp_text(const Simulation& sim);
 std::string pvd_text(const std::string& stem, const std::vector<double>& times);
 

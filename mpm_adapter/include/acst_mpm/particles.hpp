@@ -19,6 +19,10 @@ struct Particles {
   std::vector<double> wave_speed;
   std::vector<double> contact_friction;  // tangential force the footing's base holds, N/m along x
   std::vector<int> material;    // index into Simulation::materials
+  // Particles whose history is recorded (output/particle_histories), and per each its frame:
+  // track_frame_size values (particle_track.hpp), checkpointed with the rest.
+  std::vector<int> tracked;
+  std::vector<double> track_frame;
 
   void resize(std::size_t count, int state_size);
   double volume(std::size_t p) const;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "acst_mpm/particle_track.hpp"
 #include "acst_mpm/scene.hpp"
 
 namespace acst::mpm {
@@ -35,6 +36,7 @@ struct RunState {
   std::vector<double> vtk_times;       // simulation time of each frame (for the .pvd)
   std::vector<int> contours_done;      // per requested S/B
   Snapshot peak;
+  std::vector<TrackRecord> tracks;     // the followed particles' rows: at the start and per record row
 };
 
 struct RunOptions {

@@ -52,6 +52,12 @@ struct StopSpec {
   std::optional<long long> steps;
 };
 
+// A particle whose history is written (particle_NAME.csv): the one nearest (x, y) at the start.
+struct ParticleTrack {
+  std::string name;
+  double x = 0, y = 0;
+};
+
 struct OutputSpec {
   double vtk_every_S_over_B = 0.05;         // also used for time-driven runs via vtk_every_time
   std::optional<double> vtk_every_time;
@@ -61,6 +67,7 @@ struct OutputSpec {
   std::string lab_label;
   double checkpoint_every_s = 120.0;         // wall-clock seconds between checkpoints (0: none)
   bool every_step_csv = false;
+  std::vector<ParticleTrack> particle_histories;
 };
 
 struct Scene {

@@ -39,6 +39,7 @@ inline constexpr double max_memory_bytes = 64.0 * 1024 * 1024 * 1024;
 inline constexpr double max_steps = 1e9;
 inline constexpr double max_frames = 10000;
 inline constexpr double max_contours = 100;
+inline constexpr std::size_t max_particle_histories = 100;  // each a file and a row per load-record row
 // The cell size must be at least this fraction of the soil's extent.
 inline constexpr double min_cell_fraction = 1e-6;
 

@@ -1,0 +1,66 @@
+#include "acst_mpm/particle_track.hpp"
+
+#include <cmath>
+
+#include "acst_mpm/simulation.hpp"
+
+namespace acst::mpm {
+namespace {
+
+// In-plane tensor T (xx, yy, xy) turned back into the material frame: R^T T R with
+// R = [[c, s], [-s, c]], the accumulated rotation (the state now is R T_material R^T).
+void to_material_frame(double c, double s, double xx, double yy, double xy, double* out) {
+  out[0] = c * c * xx - 2.0 * c * s * xy + s * s * yy;
+  out[1] = s * s * xx + 2.0 * c * s * xy + c * c * yy;
+  out[2] = c * s * (xx - yy) + (c * c - s * s) * xy;
+}
+
+}  // namespace
+
+void follow_track(double* frame, const double* L, double dt) {
+  // The adapter's rotation Q = (I - W/2)^-1 (I + W/2) = [[cq, sq], [-sq, cq]] (material_adapter.cpp).
+  const double w = 0.5 * (L[1] - L[2]) * dt, d = 1.0 + 0.25 * w * w;
+  const double cq = (1.0 - 0.25 * w * w) / d, sq = w / d;
+  const double c = frame[0], s = frame[1];
+  frame[0] = cq * c - sq * s;  // R <- Q R: in the plane, angles add
+  frame[1] = sq * c + cq * s;
+  double de[3];
+  to_material_frame(frame[0], frame[1], L[0] * dt, L[3] * dt, 0.5 * (L[1] + L[2]) * dt, de);
+  for (int k = 0; k < 3; ++k) frame[2 + k] += de[k];
+}
+
+TrackRecord track_record(const Simulation& sim, int k, double S_over_B) {
+  const Particles& P = sim.particles();
+  const std::size_t p = static_cast<std::size_t>(P.tracked[static_cast<std::size_t>(k)]);
+  const double* frame = &P.track_frame[static_cast<std::size_t>(track_frame_size * k)];
+  const double c = frame[0], s = frame[1];
+  const Material& m = *sim.materials()[static_cast<std::size_t>(P.material[p])];
+  const double* sig = &P.stress[6 * p];
+  const double* q = P.statev.data() + P.state_size * p;
+  const double* F = q + m.state_index("F11");
+  TrackRecord r;
+  r.track = k;
+  r.step = sim.step_count();
+  r.time = sim.time();
+  r.S_over_B = S_over_B;
+  r.x = P.x[p];
+  r.y = P.y[p];
+  r.rotation_rad = std::atan2(-s, c);  // R = [[c, s], [-s, c]] turns clockwise by atan2(s, c)
+  for (int i = 0; i < 3; ++i) r.strain[i] = frame[2 + i];
+  // In-plane parts turned back; zz stays; the out-of-plane shears (xz, yz) turn as a vector.
+  for (auto [tensor, out] : {std::pair{sig, r.stress}, std::pair{F, r.fabric}}) {
+    double in_plane[3];
+    to_material_frame(c, s, tensor[0], tensor[1], tensor[3], in_plane);
+    out[0] = in_plane[0];
+    out[1] = in_plane[1];
+    out[2] = tensor[2];
+    out[3] = in_plane[2];
+    out[4] = c * tensor[4] - s * tensor[5];
+    out[5] = s * tensor[4] + c * tensor[5];
+  }
+  r.void_ratio = q[m.state_index("void_ratio")];
+  r.H = q[m.state_index("H")];
+  return r;
+}
+
+}  // namespace acst::mpm
