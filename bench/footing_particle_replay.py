@@ -7,8 +7,9 @@ through the material from the recorded start three times:
   replay   the material as in the run;
   turned   its start fabric turned 90 deg about the out-of-plane axis (bedding 0 <-> 90);
   kf0      fabric evolution off (k_f = 0).
-Writes OUT/replays.csv (peak q of the MPM and of each replay, the RMS gap of the replay to the
-MPM's stresses) and OUT/<run>_replays.png (q against S/B for each particle).
+Writes OUT/replays.csv (per particle: q of the MPM and of each replay at the footing's peak and
+their maxima up to S/B 0.2, the RMS gap of the replay to the MPM's stresses over the whole run,
+the rotation at the peak) and OUT/<run>_replays.png (q against S/B for each particle).
 
   python3 bench/footing_particle_replay.py --run V85.6=DIR --run H86.7=DIR \\
       --material data/parameters/toyoura_acst_calibrated.json --out DIR
@@ -31,6 +32,7 @@ STRAINS = ["eps_11_pct", "eps_22_pct", "eps_33_pct", "gamma_12_pct", "gamma_13_p
 STRESSES = ["sigma_11_kPa", "sigma_22_kPa", "sigma_33_kPa", "sigma_12_kPa", "sigma_13_kPa", "sigma_23_kPa"]
 FABRIC = ["F11", "F22", "F33", "F12", "F13", "F23"]
 VARIANTS = ("replay", "turned", "kf0")
+EARLY = 0.2  # S/B up to which the table's maxima are taken: past the peak, before the top row unloads
 
 
 def number(text):
@@ -91,6 +93,8 @@ def main():
         label, _, run_dir = item.partition("=")
         if not STEM.match(label):
             sys.exit(f"--run {item!r}: the label must be a plain stem (letters, digits, . _ -)")
+        with open(os.path.join(run_dir, "summary.json")) as f:
+            s_ult = json.load(f)["S_ult_over_B"]
         files = sorted(glob.glob(os.path.join(run_dir, "particle_*.csv")))
         if not files:
             sys.exit(f"--run {item!r}: no particle_*.csv in {run_dir}")
@@ -112,29 +116,37 @@ def main():
                 with open(scene_file, "w") as f:
                     json.dump(scene(material, rows, os.path.abspath(path_file), os.path.abspath(work), name, v), f, indent=1)
                 scenes.append(scene_file)
-            cases.append((label, particle, name, rows))
+            cases.append((label, particle, name, rows, s_ult))
     done = subprocess.run([a.tool, "--quiet", "--no-plot"] + scenes)
     if done.returncode not in (0, 1):
         return done.returncode
     table = []
-    for label, particle, name, rows in cases:
-        mpm = [p_q([r[k] for k in STRESSES]) for r in rows]
-        row = {"run": label, "particle": particle, "rows": len(rows),
-               "max_rotation_deg": round(max(abs(r["rotation_deg"]) for r in rows), 2),
-               "mpm_peak_q_kPa": round(max(q for _, q in mpm), 1)}
+    for label, particle, name, rows, s_ult in cases:
+        mpm = [p_q([r[k] for k in STRESSES])[1] for r in rows]
+        at_peak = min(range(len(rows)), key=lambda i: abs(rows[i]["S_over_B"] - s_ult))
+        early = [i for i in range(len(rows)) if rows[i]["S_over_B"] <= EARLY]
+        row = {"run": label, "particle": particle, "rows": len(rows), "footing_S_ult_over_B": round(s_ult, 4),
+               "rotation_at_peak_deg": round(rows[at_peak]["rotation_deg"], 2),
+               "mpm_q_at_peak_kPa": round(mpm[at_peak], 1), "mpm_max_q_kPa": round(max(mpm[i] for i in early), 1)}
         for v in VARIANTS:
             out = os.path.join(work, f"{name}_{v}.csv")
             got = read_rows(out) if os.path.exists(out) else []
-            ok = len(got) == len(rows)
-            row[f"{v}_peak_q_kPa"] = round(max(g["q_kPa"] for g in got), 1) if got else float("nan")
+            row[f"{v}_complete"] = len(got) == len(rows)
+            if not row[f"{v}_complete"]:
+                continue
+            q = [p_q([g[k] for k in STRESSES])[1] for g in got]
+            row[f"{v}_q_at_peak_kPa"] = round(q[at_peak], 1)
+            row[f"{v}_max_q_kPa"] = round(max(q[i] for i in early), 1)
             if v == "replay":
-                scale = max(abs(p) for p, _ in mpm)
-                gaps = [math.sqrt(sum((g[k] - r[k]) ** 2 for k in STRESSES)) for g, r in zip(got, rows)] if ok else []
-                row["replay_rms_gap_over_max_p"] = round(math.sqrt(sum(x * x for x in gaps) / len(gaps)) / scale, 4) if gaps else float("nan")
-            row[f"{v}_complete"] = ok
+                scale = max(abs(p_q([r[k] for k in STRESSES])[0]) for r in rows)
+                gaps = [sum((g[k] - r[k]) ** 2 for k in STRESSES) for g, r in zip(got, rows)]
+                row["replay_rms_gap_over_max_p"] = round(math.sqrt(sum(gaps) / len(gaps)) / scale, 4)
         table.append(row)
+    fields = []
+    for r in table:
+        fields += [k for k in r if k not in fields]
     with open(os.path.join(a.out, "replays.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(table[0].keys()))
+        w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
         w.writerows(table)
     for r in table:
@@ -152,9 +164,9 @@ def plot(out, work, cases):
         script = [f"set terminal pngcairo size {430 * cols},{330 * rows_n} font ',9'",
                   f"set output {gp_quoted(os.path.join(out, label + '_replays.png'))}",
                   f"set multiplot layout {rows_n},{cols} title {gp_quoted(label + ': particles of the footing run, q against S/B: MPM and element-driver replays of their strain paths')}",
-                  "set datafile separator ','", "set key top right", "set grid",
+                  "set datafile separator ','", "set key top right", "set grid", "set termoption noenhanced",
                   "set xlabel 'S/B'", "set ylabel 'q [kPa]'"]
-        for _, particle, name, rows in mine:
+        for _, particle, name, rows, _ in mine:
             mpm_file = os.path.join(work, f"{name}_mpm.dat")
             with open(mpm_file, "w", newline="") as f:
                 csv.writer(f).writerows([r["S_over_B"], p_q([r[k] for k in STRESSES])[1]] for r in rows)
@@ -167,7 +179,7 @@ def plot(out, work, cases):
                     continue
                 got = read_rows(src)
                 with open(merged, "w", newline="") as f:
-                    csv.writer(f).writerows([r["S_over_B"], g["q_kPa"]] for r, g in zip(rows, got))
+                    csv.writer(f).writerows([r["S_over_B"], p_q([g[k] for k in STRESSES])[1]] for r, g in zip(rows, got))
                 title = {"replay": "replay", "turned": "fabric turned 90 deg", "kf0": "k_f = 0"}[v]
                 curves.append(f"{gp_quoted(merged)} using 1:2 with lines lc rgb '{colour}' title '{title}'")
             script.append(f"set title {gp_quoted(particle)}")

@@ -207,10 +207,11 @@ TEST(MpmCli, OnlyTheRunsOwnFileNamesCountAsAnEarlierRun) {
   for (const char* own : {"load_settlement.csv", "load_settlement.png", "load_settlement.gp", "load_settlement.partial.csv",
                           "load_settlement.failed.csv", "particles.pvd", "particles_0000.vtp", "particles_12345.vtp",
                           "summary.json", "checkpoint.bin", "failure_reproducer.json", "shear_strain_SB0.100.png",
-                          "displacement_peak.csv", "shear_strain_peak.gp", ".summary.json.tmp123"})
+                          "displacement_peak.csv", "shear_strain_peak.gp", ".summary.json.tmp123", "particle_centre_B4.csv"})
     EXPECT_TRUE(is_run_output_name(own)) << own;
   for (const char* other : {"thesis.tex", "particles_.vtp", "particles_12a.vtp", "particles_0001.vtp.bak", "summary.json~",
                             "shear_strain_.png", "shear_strain_a b.png", "displacement_x.pdf", "load_settlement.txt",
-                            "previous", ".tmp1", "checkpoint.bin.old"})
+                            "previous", ".tmp1", "checkpoint.bin.old", "particle_.csv", "particle_a b.csv",
+                            "particle_x.csv.bak"})
     EXPECT_FALSE(is_run_output_name(other)) << other;
 }
