@@ -198,5 +198,31 @@ TEST_F(Crossing, SmallReversalStaysElastic) {
   EXPECT_LE(norm(s.stress - expected) / norm(expected), 1e-12);
 }
 
+
+// Continued loading from the surface is plastic from its start, so it skips the elastic trial
+// (docs/integration.md section 1, step 1): FE-1 then evaluates one elastic rate (the loading
+// test) and one plastic rate, where the trial would add a second elastic rate. The answer is the
+// trial path's: the same start moved a hair inside the cone (H raised by 2 FTOL) takes the trial,
+// finds the crossing at once and must end at the same stress to round-off (the crossing moves
+// the start by ~FTOL, a relative change of ~1e-8).
+TEST_F(Crossing, LoadingFromTheSurfaceSkipsTheTrialAndAgreesWithIt) {
+  const Material fe1 = test::with_integrator(guide_, integration::Scheme::forward_euler, 1e-4);
+  const Sym deps = 1e-4 * drained_direction_;
+  State direct = loaded_;
+  const Report r = fe1.update(direct, deps);
+  ASSERT_EQ(r.status, Status::ok);
+  EXPECT_TRUE(r.plastic);
+  EXPECT_EQ(r.counters.rate_evaluations, 2);
+  EXPECT_EQ(r.counters.crossing_iterations, 0);
+
+  State via_trial = loaded_;
+  via_trial.H += 2e-8;
+  const Report t = fe1.update(via_trial, deps);
+  ASSERT_EQ(t.status, Status::ok);
+  EXPECT_TRUE(t.plastic);
+  EXPECT_GE(t.counters.rate_evaluations, 4);  // the trial's two elastic rates and the crossing
+  EXPECT_LE(norm(direct.stress - via_trial.stress) / norm(direct.stress), 1e-6);
+}
+
 }  // namespace
 }  // namespace acst

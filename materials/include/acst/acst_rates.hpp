@@ -121,10 +121,13 @@ class AcstRates {
     return acst::yield_value(stress(y), prm_.c, prm_.R_tolerance, H);
   }
 
-  // Cosine between df/dsigma at y and the elastic trial stress increment.
+  // Cosine between df/dsigma at y and the elastic trial stress increment; 0 (neutral) on the
+  // cone's axis, R below R_tolerance, where df/dsigma is not defined and n is only a guess.
   double unloading_cosine(const Vector& y, const Vector& elastic_dy, const Sym& deps) const {
     const Sym sigma = stress(y);
-    const Sym grad = yield_gradient(ratio_state(sigma, deps), mean_stress(sigma));
+    const StressRatioState& ratio = ratio_state(sigma, deps);
+    if (ratio.small_R) return 0.0;
+    const Sym grad = yield_gradient(ratio, mean_stress(sigma));
     const Sym dsig = elastic_dy.template head<6>();
     const double den = norm(grad) * norm(dsig);
     return den > 0.0 ? contract(grad, dsig) / den : 0.0;

@@ -35,19 +35,27 @@ class ExplicitSubstepping {
   // substep size between calls (pseudo-time units).
   Report integrate(Vector& y, double& H, double& substep_hint, const Sym& deps) const {
     Report rep;
-    // One Heun step decides elastic or not; only an elastic answer needs it within STOL.
-    const ElasticStep trial = heun_step(y, deps, 1.0, rep.counters);
+    Vector k1;
+    model_.elastic_rate(y, deps, k1, rep.counters);
+    const double f0 = model_.yield_value(y, H, deps);
+    // A start on the surface loaded outwards is plastic from its start: the elastic trial would
+    // only be thrown away (bench/RESULTS.md section 1, proposal 6). A neutral increment (cosine
+    // within ltol of 0) is elastic if its trial stays on the surface.
+    const bool on_surface = f0 >= -opt_.ftol;
+    const double cosine = on_surface ? model_.unloading_cosine(y, k1, deps) : -1.0;
+    if (cosine > opt_.ltol) return plastic(y, H, substep_hint, deps, rep);
+    // Otherwise one Heun step decides elastic or not; only an elastic answer needs it within STOL.
+    const ElasticStep trial = heun_step(y, k1, deps, 1.0, rep.counters);
     const double f_trial = model_.yield_value(trial.y, H, deps);
     if (f_trial <= opt_.ftol) {
       y = trial.error <= opt_.stol ? trial.y : elastic_update(y, deps, rep.counters);
       return finish(y, H, rep, Reason::none);
     }
-    const double alpha = elastic_fraction(y, H, deps, trial.y, f_trial, rep.counters);
+    const double alpha = !on_surface           ? pegasus(y, H, deps, 0.0, f0, 1.0, f_trial, rep.counters)
+                         : cosine >= -opt_.ltol ? 0.0
+                                                : unload_reload_fraction(y, H, deps, f0, f_trial, rep.counters);
     if (alpha > 0.0) y = elastic_update(y, alpha * deps, rep.counters);
-    const Sym plastic_part = (1.0 - alpha) * deps;
-    const Reason r = opt_.scheme == Scheme::forward_euler ? forward_euler(y, H, plastic_part, rep)
-                                                          : adaptive(y, H, substep_hint, plastic_part, rep);
-    return finish(y, H, rep, r);
+    return plastic(y, H, substep_hint, (1.0 - alpha) * deps, rep);
   }
 
  private:
@@ -59,13 +67,25 @@ class ExplicitSubstepping {
     double error;  // relative error estimate (Heun against Euler)
   };
 
-  // Heun's two-stage secant step over the fraction h of deps (pressure-dependent elasticity).
-  ElasticStep heun_step(const Vector& y, const Sym& deps, double h, Counters& c) const {
-    Vector k1, k2;
-    model_.elastic_rate(y, deps, k1, c);
+  Report plastic(Vector& y, double& H, double& substep_hint, const Sym& deps, Report& rep) const {
+    const Reason r = opt_.scheme == Scheme::forward_euler ? forward_euler(y, H, deps, rep)
+                                                          : adaptive(y, H, substep_hint, deps, rep);
+    return finish(y, H, rep, r);
+  }
+
+  // Heun's two-stage secant step over the fraction h of deps (pressure-dependent elasticity),
+  // from the rate k1 at y.
+  ElasticStep heun_step(const Vector& y, const Vector& k1, const Sym& deps, double h, Counters& c) const {
+    Vector k2;
     model_.elastic_rate(y + h * k1, deps, k2, c);
     const Vector y_new = y + (0.5 * h) * (k1 + k2);
     return {y_new, std::max(model_.relative_error(y_new, (0.5 * h) * (k2 - k1)), 1e-16)};
+  }
+
+  ElasticStep heun_step(const Vector& y, const Sym& deps, double h, Counters& c) const {
+    Vector k1;
+    model_.elastic_rate(y, deps, k1, c);
+    return heun_step(y, k1, deps, h, c);
   }
 
   // The elastic law over deps within STOL, by Heun substeps (one for ordinary increments). The
@@ -98,13 +118,9 @@ class ExplicitSubstepping {
     return model_.yield_value(step.error <= opt_.stol ? step.y : elastic_update(y, part, c), H, deps);
   }
 
-  // Fraction of deps that is elastic: 0 for plastic loading from the surface, the crossing for a
-  // start inside, the reloading crossing for unload-then-reload.
-  double elastic_fraction(const Vector& y, double H, const Sym& deps, const Vector& trial, double f1,
-                          Counters& c) const {
-    const double f0 = model_.yield_value(y, H, deps);
-    if (f0 < -opt_.ftol) return pegasus(y, H, deps, 0.0, f0, 1.0, f1, c);
-    if (model_.unloading_cosine(y, trial - y, deps) >= -opt_.ltol) return 0.0;
+  // Fraction of deps that is elastic for an increment that starts on the surface, unloads and
+  // ends outside it (f1 > 0): where the path crosses the surface again.
+  double unload_reload_fraction(const Vector& y, double H, const Sym& deps, double f0, double f1, Counters& c) const {
     ++c.unload_reload;
     // Scan [lo, hi] in n steps for the first point outside; if the very first step is already
     // outside, the path's inside stretch is shorter than one step: scan that step again, finer.
