@@ -70,10 +70,8 @@ int Material::state_index(const std::string& name) const {
 }
 
 acst_status Material::update(double* stress, double* statev, const double* L, double dt, std::string* reproducer) const {
-  // Hughes-Winget rotation Q = (I - W/2)^-1 (I + W/2) of the spin W = skew(L) dt (in-plane).
-  const double w = 0.5 * (L[1] - L[2]) * dt, d = 1.0 + 0.25 * w * w;
-  const double c = (1.0 - 0.25 * w * w) / d, s = w / d;
-  const double Q[9] = {c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0};
+  const PlaneRotation r = hughes_winget_rotation(L, dt);
+  const double Q[9] = {r.c, r.s, 0.0, -r.s, r.c, 0.0, 0.0, 0.0, 1.0};
   acst_status st = acst_rotate_state(stress, statev, model_.get(), Q);
   if (st.code != ACST_OK) return st;
   // Plane strain: eps_zz = 0; ABI strain is tension positive with engineering shear.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "acst_mpm/material_adapter.hpp"
 #include "acst_mpm/simulation.hpp"
 
 namespace acst::mpm {
@@ -18,12 +19,10 @@ void to_material_frame(double c, double s, double xx, double yy, double xy, doub
 }  // namespace
 
 void follow_track(double* frame, const double* L, double dt) {
-  // The adapter's rotation Q = (I - W/2)^-1 (I + W/2) = [[cq, sq], [-sq, cq]] (material_adapter.cpp).
-  const double w = 0.5 * (L[1] - L[2]) * dt, d = 1.0 + 0.25 * w * w;
-  const double cq = (1.0 - 0.25 * w * w) / d, sq = w / d;
+  const PlaneRotation q = hughes_winget_rotation(L, dt);
   const double c = frame[0], s = frame[1];
-  frame[0] = cq * c - sq * s;  // R <- Q R: in the plane, angles add
-  frame[1] = sq * c + cq * s;
+  frame[0] = q.c * c - q.s * s;  // R <- Q R: in the plane, angles add
+  frame[1] = q.s * c + q.c * s;
   double de[3];
   to_material_frame(frame[0], frame[1], L[0] * dt, L[3] * dt, 0.5 * (L[1] + L[2]) * dt, de);
   for (int k = 0; k < 3; ++k) frame[2 + k] += de[k];

@@ -17,6 +17,18 @@ struct MaterialError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The incremental rotation of a half step, Q = (I - W/2)^-1 (I + W/2) of the in-plane spin
+// W = skew(L) dt (Hughes-Winget), as cos and sin of its angle: Q = [[c, s, 0], [-s, c, 0], [0, 0, 1]]
+// (L row-major, L_ij = dv_i/dx_j). The one formula for the material update and the particles'
+// followed frames (particle_track.hpp), which must turn alike.
+struct PlaneRotation {
+  double c, s;
+};
+inline PlaneRotation hughes_winget_rotation(const double* L, double dt) {
+  const double w = 0.5 * (L[1] - L[2]) * dt, d = 1.0 + 0.25 * w * w;
+  return {(1.0 - 0.25 * w * w) / d, w / d};
+}
+
 // One material: an owning handle plus what the core needs to know about it.
 class Material {
  public:

@@ -8,11 +8,6 @@
 // the frame it had at the start, turned with it. There the state never rotates and the strain
 // is the sum of the increments the material saw, turned back: a fixed-frame strain path that
 // acst_element replays as it stands.
-#include <string>
-#include <vector>
-
-#include "acst_mpm/particles.hpp"
-
 namespace acst::mpm {
 
 class Simulation;
@@ -34,7 +29,7 @@ struct TrackRecord {
 inline constexpr int track_frame_size = 5;
 
 // Follows one tracked particle over a half step with velocity gradient L (row-major, L_ij =
-// dv_i/dx_j), turning its frame by the same Hughes-Winget rotation the material adapter uses.
+// dv_i/dx_j), turning its frame by the material update's rotation (hughes_winget_rotation).
 void follow_track(double* frame, const double* L, double dt);
 
 // The row of tracked particle k now (its material is a sand: fabric, void ratio and H by name).
