@@ -27,6 +27,7 @@ void usage(std::ostream& o) {
        "Fits ACST (or isotropic) parameters to lab curves described by a JSON fit description\n"
        "(docs/calibration.md): a small design of parameter sets, then GSL trust-region least-squares\n"
        "fits from the best of them, each evaluation running every element test in parallel.\n"
+       "With \"parameters\": {} nothing is fitted: the material is evaluated once (a prediction).\n"
        "Writes into the description's output.directory (default results/calibration/NAME) or DIR,\n"
        "a folder that holds nothing or an earlier result of the same fit, replaced as a whole:\n"
        "  NAME_parameters.json            the fitted material (loadable by acst_element scenes)\n"

@@ -105,10 +105,35 @@ double header_number(const driver::LabCurve& lab, const char* key, const std::st
   return v;
 }
 
+// Which column of a peak_friction table holds each quantity: `columns` names them; the defaults
+// are phi_deg, b and omega_deg, and b and the bedding angle fall back to one value for the
+// table when it has no such column. Every named column must exist.
+template <class KeyPath>
+void read_table_columns(const json& e, const KeyPath& key_path, const driver::LabCurve& lab, ExperimentSpec& x) {
+  const char* roles[] = {"phi_deg", "b", "bedding_angle_deg", "sigma3_kPa", "void_ratio"};
+  std::string* fields[] = {&x.phi_column, &x.b_column, &x.bedding_column, &x.sigma3_column, &x.void_ratio_column};
+  if (e.contains("columns")) {
+    const std::string cp = key_path("columns");
+    f::object(e["columns"], cp);
+    f::allow_keys(e["columns"], {"phi_deg", "b", "bedding_angle_deg", "sigma3_kPa", "void_ratio"}, cp);
+    for (std::size_t r = 0; r < std::size(roles); ++r)
+      if (e["columns"].contains(roles[r])) {
+        *fields[r] = f::string(e["columns"][roles[r]], cp + "/" + roles[r]);
+        if (lab.column(*fields[r]).empty())
+          f::fail(cp + "/" + roles[r], "'" + x.data_file + "' has no column '" + *fields[r] + "'");
+      }
+  }
+  if (lab.column(x.phi_column).empty())
+    f::fail(key_path("data"), "'" + x.data_file + "' has no '" + x.phi_column + "' column (name the peak friction angle's in /columns/phi_deg)");
+  // The default columns are optional: without them the experiment's one value is used.
+  if (x.b_column == "b" && lab.column("b").empty()) x.b_column.clear();
+  if (x.bedding_column == "omega_deg" && lab.column("omega_deg").empty()) x.bedding_column.clear();
+}
+
 ExperimentSpec read_experiment(const json& j, const std::string& path, const json& defaults, const std::string& base_dir) {
   f::allow_keys(j, {"id", "data", "test", "group", "sigma3_kPa", "void_ratio", "void_ratio_at_kPa",
                     "bedding_angle_deg", "b", "strain_range_pct", "strain_increment_pct", "weight", "fit",
-                    "stress_measure", "rows", "peak_search_strain_pct", "description"},
+                    "stress_measure", "rows", "columns", "peak_search_strain_pct", "description"},
                 path);
   // Defaults first, then the experiment's own keys.
   json e = defaults;
@@ -147,15 +172,27 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
   // A group names a parameter file of its own (NAME_parameters_GROUP.json).
   if (e.contains("group")) x.group = common::require_plain_stem(f::string(e["group"], key_path("group")), key_path("group"));
 
+  if (table) read_table_columns(e, key_path, lab, x);
   const f::Range sigma3_range = f::positive(), void_ratio_range{0.0, 2.97, true, true}, angle_range{0.0, 180.0};
-  x.sigma3_kPa = e.contains("sigma3_kPa") ? f::number(e["sigma3_kPa"], key_path("sigma3_kPa"), sigma3_range, "kPa")
-                                          : header_number(lab, "sigma3_kPa", path, "sigma3_kPa", sigma3_range);
-  x.void_ratio = e.contains("void_ratio") ? f::number(e["void_ratio"], key_path("void_ratio"), void_ratio_range)
-                                          : header_number(lab, "e0", path, "void_ratio", void_ratio_range);
+  if (x.sigma3_column.empty())
+    x.sigma3_kPa = e.contains("sigma3_kPa") ? f::number(e["sigma3_kPa"], key_path("sigma3_kPa"), sigma3_range, "kPa")
+                                            : header_number(lab, "sigma3_kPa", path, "sigma3_kPa", sigma3_range);
+  else if (e.contains("sigma3_kPa"))
+    f::fail(key_path("sigma3_kPa"), "the table's column '" + x.sigma3_column + "' gives it (/columns/sigma3_kPa)");
+  if (x.void_ratio_column.empty())
+    x.void_ratio = e.contains("void_ratio") ? f::number(e["void_ratio"], key_path("void_ratio"), void_ratio_range)
+                                            : header_number(lab, "e0", path, "void_ratio", void_ratio_range);
+  else if (e.contains("void_ratio"))
+    f::fail(key_path("void_ratio"), "the table's column '" + x.void_ratio_column + "' gives it (/columns/void_ratio)");
+  // With the confining stress per row, a row below void_ratio_at_kPa starts at its own stress
+  // with the void ratio as given (problem.cpp); a single stress must not lie below it.
   if (e.contains("void_ratio_at_kPa"))
-    x.void_ratio_at_kPa = f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), {0.0, x.sigma3_kPa, true, false}, "kPa (at most sigma3_kPa)");
+    x.void_ratio_at_kPa = x.sigma3_column.empty()
+        ? f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), {0.0, x.sigma3_kPa, true, false}, "kPa (at most sigma3_kPa)")
+        : f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), f::positive(), "kPa");
   if (e.contains("b")) {
-    if (x.test != "true_triaxial") f::fail(key_path("b"), "only for the true_triaxial test (peak_friction takes b from its table)");
+    if (x.test != "true_triaxial" && !(table && x.b_column.empty()))
+      f::fail(key_path("b"), "only for the true_triaxial test, and for a peak_friction table without a b column");
     x.b = f::number(e["b"], key_path("b"), {0.0, 1.0});
   }
   if (e.contains("weight")) x.weight = f::number(e["weight"], key_path("weight"), {0.0, 1e6, false, false});
@@ -195,11 +232,17 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
       else if (m == "q_kPa") x.stress_measure = StressMeasure::q_kPa;
       else f::fail(key_path("stress_measure"), "'" + m + "' is not allowed (stress_ratio = sigma1'/sigma3', q_kPa)");
     }
-    if (j.contains("rows")) f::fail(path + "/rows", "only for table tests (peak_friction)");
+    for (const char* k : {"rows", "columns"})
+      if (j.contains(k)) f::fail(path + "/" + k, "only for table tests (peak_friction)");
   } else {
-    for (const char* column : {"b", "omega_deg", "phi_deg"})
-      if (lab.column(column).empty())
-        f::fail(key_path("data"), "'" + x.data_file + "' has no '" + column + "' column (a peak_friction table needs b, omega_deg, phi_deg)");
+    if (x.bedding_column.empty())
+      x.bedding_angle_deg = e.contains("bedding_angle_deg")
+          ? f::number(e["bedding_angle_deg"], key_path("bedding_angle_deg"), angle_range, "deg")
+          : header_number(lab, "bedding_angle_deg", path, "bedding_angle_deg", angle_range);
+    else if (e.contains("bedding_angle_deg"))
+      f::fail(key_path("bedding_angle_deg"), "the table's column '" + x.bedding_column + "' gives it (/columns/bedding_angle_deg)");
+    if (x.b_column.empty() && !e.contains("b"))
+      f::fail(path + "/b", "required: the table has no b column (/columns/b)");
     if (e.contains("rows")) {
       f::object(e["rows"], key_path("rows"));
       for (const auto& item : e["rows"].items()) {
@@ -212,8 +255,8 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
     }
     if (e.contains("peak_search_strain_pct"))
       x.peak_search_strain_pct = f::number(e["peak_search_strain_pct"], key_path("peak_search_strain_pct"), {0.5, 50.0}, "%");
-    for (const char* k : {"bedding_angle_deg", "strain_range_pct", "fit", "stress_measure"})
-      if (j.contains(k)) f::fail(path + "/" + k, "not used by table tests (the table gives the bedding angle; the peak is searched up to peak_search_strain_pct)");
+    for (const char* k : {"strain_range_pct", "fit", "stress_measure"})
+      if (j.contains(k)) f::fail(path + "/" + k, "not used by table tests (the peak is searched up to peak_search_strain_pct)");
   }
   return x;
 }
@@ -285,7 +328,6 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
   }
 
   f::object(j["parameters"], "/parameters");
-  if (j["parameters"].empty()) f::fail("/parameters", "name at least one parameter to fit");
   for (const auto& item : j["parameters"].items())
     s.parameters.push_back(read_parameter(item.key(), item.value(), "/parameters/" + item.key(), base));
 

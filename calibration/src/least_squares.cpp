@@ -248,6 +248,14 @@ FitResult fit(const LeastSquaresProblem& problem, const OptimizerSettings& o, co
                    std::to_string(problem.residual_count) + " measured points");
 
   auto t0 = std::chrono::steady_clock::now();
+  if (problem.start.size() == 0) {  // nothing to fit: the material as given, evaluated once
+    result.theta = problem.start;
+    result.residuals = problem.residuals({result.theta}).front();
+    result.cost = result.residuals.squaredNorm();
+    result.evaluations = 1;
+    result.local_seconds = seconds_since(t0);
+    return result;
+  }
   std::vector<Eigen::VectorXd> candidates{problem.start};
   if (o.design_points > 0) {
     result.design = design(transform, o.design_points, o.seed);

@@ -118,16 +118,33 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
     if (table) {
       Series phi;
       phi.axis = "phi";
-      const auto b = lab.column("b"), omega = lab.column("omega_deg"), measured = lab.column("phi_deg");
+      const std::vector<double> measured = lab.column(x.phi_column);
+      // A quantity from its column, or the experiment's one value for every row.
+      auto per_row = [&](const std::string& column, double value) {
+        return column.empty() ? std::vector<double>(measured.size(), value) : lab.column(column);
+      };
+      const auto b = per_row(x.b_column, x.b), omega = per_row(x.bedding_column, x.bedding_angle_deg);
+      const auto sigma3 = per_row(x.sigma3_column, x.sigma3_kPa), e0 = per_row(x.void_ratio_column, x.void_ratio);
       for (std::size_t i = 0; i < measured.size(); ++i) {
-        bool selected = !std::isnan(b[i]) && !std::isnan(omega[i]) && !std::isnan(measured[i]);
+        bool selected = !std::isnan(b[i]) && !std::isnan(omega[i]) && !std::isnan(measured[i]) && !std::isnan(sigma3[i]) &&
+                        !std::isnan(e0[i]);
         for (const auto& [column, values] : x.row_filter) {
           const double v = lab.column(column)[i];
           selected = selected && std::find(values.begin(), values.end(), v) != values.end();
         }
         if (!selected) continue;
+        if (!(b[i] >= 0.0 && b[i] <= 1.0 && sigma3[i] > 0.0 && e0[i] > 0.0 && e0[i] < 2.97))
+          throw common::InputError(x.path + "/data: row " + std::to_string(i + 1) + " of '" + x.data_file + "' has b " +
+                                   common::fields::shown(b[i]) + ", sigma3 " + common::fields::shown(sigma3[i]) +
+                                   " kPa, void ratio " + common::fields::shown(e0[i]) +
+                                   " (allowed: b in [0, 1], sigma3 > 0, void ratio in (0, 2.97))");
+        ExperimentSpec row = x;
+        row.sigma3_kPa = sigma3[i];
+        row.void_ratio = e0[i];
         const int n = run_increments(x.peak_search_strain_pct, x.strain_increment_pct, x);
-        add_simulation(static_cast<int>(i), b[i], omega[i], scene_json(spec, x, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
+        add_simulation(static_cast<int>(i), b[i], omega[i], scene_json(spec, row, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
+        simulations_.back().sigma3_kPa = sigma3[i];
+        simulations_.back().void_ratio = e0[i];
         phi.x.push_back(static_cast<double>(i));
         phi.measured.push_back(measured[i]);
       }

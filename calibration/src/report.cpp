@@ -49,9 +49,13 @@ std::string panel(const Problem& problem, std::size_t k, const Series& s, std::s
   std::ostringstream g;
   g << "set title " << common::gp_quoted(x.id + " (" + x.test + ", " + s.axis + ")") << " noenhanced\n";
   if (s.axis == "phi") {
-    g << "set xlabel 'bedding angle [deg]'\nset ylabel " << common::gp_quoted(axis_title(x, s.axis)) << "\nset xrange [-10:100]\n"
-      << "plot " << points << " using 2:4:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 7 ps 1.3 lc variable title 'lab (TC, PSC, TE)', \\\n"
-      << "     " << points << " using 2:5:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 6 ps 2 lw 2 lc variable title 'fit'\n"
+    // Against the void ratio where the rows have their own, else the bedding angle.
+    const bool by_density = !x.void_ratio_column.empty();
+    const char* xcol = by_density ? "5" : "2";
+    g << (by_density ? "set xlabel 'void ratio e_0 [-]'\nset xrange [*:*]\n" : "set xlabel 'bedding angle [deg]'\nset xrange [-10:100]\n")
+      << "set ylabel " << common::gp_quoted(axis_title(x, s.axis)) << "\n"
+      << "plot " << points << " using " << xcol << ":6:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 7 ps 1.3 lc variable title 'lab (TC, PSC, TE)', \\\n"
+      << "     " << points << " using " << xcol << ":7:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 6 ps 2 lw 2 lc variable title 'model'\n"
       << "set xrange [*:*]\n";
     return g.str();
   }
@@ -98,11 +102,13 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
         const double d = problem.simulated(k, s, i, view) - s.measured[i];
         const double n = std::isfinite(d) ? d / s.scale : problem.spec().optimizer.penalty;
         sum += std::isfinite(d) ? d * d : NAN;
+        a.mean += d;
         sum_n += n * n;
         a.max_abs = std::max(a.max_abs, std::isfinite(d) ? std::abs(d) : INFINITY);
         e.cost_share += s.point_weight * n * n;
       }
       a.rms = std::sqrt(sum / a.points);
+      a.mean /= a.points;
       a.rms_normalised = std::sqrt(sum_n / a.points);
       e.axes.push_back(a);
     }
@@ -168,7 +174,8 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
     json axes = json::array();
     for (const AxisError& a : e.axes)
       axes.push_back({{"axis", a.axis}, {"points", a.points}, {"rms_normalised", number_or_null(a.rms_normalised)},
-                      {"rms", number_or_null(a.rms)}, {"max_abs", number_or_null(a.max_abs)}, {"scale", a.scale}});
+                      {"rms", number_or_null(a.rms)}, {"max_abs", number_or_null(a.max_abs)}, {"mean", number_or_null(a.mean)},
+                      {"scale", a.scale}});
     ex.push_back({{"id", e.id}, {"test", e.test}, {"group", e.group}, {"ok", e.ok}, {"message", e.message},
                   {"weight", e.weight}, {"cost_share", e.cost_share}, {"axes", axes}});
   }
@@ -213,37 +220,46 @@ std::string report_markdown(const json& r) {
   m << "Objective (weighted mean of squared normalised errors): " << fmt(o["sum_of_squares"].get<double>())
     << "; RMS normalised error " << fmt(o["rms_normalised_error"].get<double>()) << " over " << o["residuals"] << " points, "
     << o["fitted_values"] << " fitted values.\n\n";
-  m << "## Parameters\n\n| parameter | start | bounds | value | std. error | 95 % interval | note |\n|---|---|---|---|---|---|---|\n";
-  for (const json& p : r["parameters"]) {
-    auto num = [](const json& v) { return v.is_null() ? std::string("-") : fmt(v.get<double>()); };
-    m << "| " << p["label"].get<std::string>() << " | " << fmt(p["start"].get<double>()) << " | ["
-      << fmt(p["bounds"][0].get<double>()) << ", " << fmt(p["bounds"][1].get<double>()) << "] | "
-      << fmt(p["value"].get<double>()) << " | " << num(p["standard_error"]) << " | [" << num(p["ci95"][0]) << ", "
-      << num(p["ci95"][1]) << "] | " << (p["at_bound"].get<bool>() ? "at a bound: interval not meaningful" : "") << " |\n";
-  }
-  m << "\nFixed: ";
-  bool first = true;
-  for (const auto& item : r["fixed"].items()) {
-    m << (first ? "" : ", ") << item.key() << " " << item.value().dump();
-    first = false;
-  }
-  m << ".\n\nStandard errors are s (J^T J)^-1/2 with s^2 = " << fmt(o["residual_variance"].get<double>())
-    << " (sum of squares / degrees of freedom) and J the Jacobian at the optimum (condition number of the column-scaled J^T J: "
-    << (o["condition_number"].is_null() ? std::string("inf") : fmt(o["condition_number"].get<double>(), "%.3g"))
-    << "). They treat the digitised points as independent, which they are not: read them as lower bounds.\n\n";
-  m << "### Correlation\n\n|";
-  for (const json& l : r["correlation"]["labels"]) m << " | " << l.get<std::string>();
-  m << " |\n|---";
-  for (std::size_t j = 0; j < r["correlation"]["labels"].size(); ++j) m << "|---";
-  m << "|\n";
-  for (std::size_t i = 0; i < r["correlation"]["labels"].size(); ++i) {
-    m << "| " << r["correlation"]["labels"][i].get<std::string>();
-    for (const json& v : r["correlation"]["matrix"][i]) m << " | " << (v.is_null() ? std::string("-") : fmt(v.get<double>(), "%.2f"));
-    m << " |\n";
+  // The material's values as given: every one when nothing is fitted (a prediction), else the fixed ones.
+  auto values = [&](const char* heading) {
+    m << heading;
+    bool first = true;
+    for (const auto& item : r["fixed"].items()) {
+      m << (first ? "" : ", ") << item.key() << " " << item.value().dump();
+      first = false;
+    }
+  };
+  if (r["parameters"].empty()) {
+    values("## Material\n\nNothing is fitted; the values: ");
+    m << ".\n";
+  } else {
+    m << "## Parameters\n\n| parameter | start | bounds | value | std. error | 95 % interval | note |\n|---|---|---|---|---|---|---|\n";
+    for (const json& p : r["parameters"]) {
+      auto num = [](const json& v) { return v.is_null() ? std::string("-") : fmt(v.get<double>()); };
+      m << "| " << p["label"].get<std::string>() << " | " << fmt(p["start"].get<double>()) << " | ["
+        << fmt(p["bounds"][0].get<double>()) << ", " << fmt(p["bounds"][1].get<double>()) << "] | "
+        << fmt(p["value"].get<double>()) << " | " << num(p["standard_error"]) << " | [" << num(p["ci95"][0]) << ", "
+        << num(p["ci95"][1]) << "] | " << (p["at_bound"].get<bool>() ? "at a bound: interval not meaningful" : "") << " |\n";
+    }
+    values("\nFixed: ");
+    m << ".\n\nStandard errors are s (J^T J)^-1/2 with s^2 = " << fmt(o["residual_variance"].get<double>())
+      << " (sum of squares / degrees of freedom) and J the Jacobian at the optimum (condition number of the column-scaled J^T J: "
+      << (o["condition_number"].is_null() ? std::string("inf") : fmt(o["condition_number"].get<double>(), "%.3g"))
+      << "). They treat the digitised points as independent, which they are not: read them as lower bounds.\n\n";
+    m << "### Correlation\n\n|";
+    for (const json& l : r["correlation"]["labels"]) m << " | " << l.get<std::string>();
+    m << " |\n|---";
+    for (std::size_t j = 0; j < r["correlation"]["labels"].size(); ++j) m << "|---";
+    m << "|\n";
+    for (std::size_t i = 0; i < r["correlation"]["labels"].size(); ++i) {
+      m << "| " << r["correlation"]["labels"][i].get<std::string>();
+      for (const json& v : r["correlation"]["matrix"][i]) m << " | " << (v.is_null() ? std::string("-") : fmt(v.get<double>(), "%.2f"));
+      m << " |\n";
+    }
   }
   m << "\n## Errors per test\n\nRMS of simulated minus measured at the measured points, in the axis' unit and normalised by the "
        "measured range (scale); share = part of the objective.\n\n"
-       "| test | type | group | weight | share | stress RMS | stress RMS/scale | e_v RMS % | e_v RMS/scale | phi RMS deg | status |\n"
+       "| test | type | group | weight | share | stress RMS | stress RMS/scale | e_v RMS % | e_v RMS/scale | phi RMS deg (mean: bias) | status |\n"
        "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const json& e : r["experiments"]) {
     std::string cells[5] = {"-", "-", "-", "-", "-"};
@@ -257,7 +273,7 @@ std::string report_markdown(const json& r) {
         cells[2] = num(a["rms"], "%.3g");
         cells[3] = num(a["rms_normalised"], "%.3f");
       } else {
-        cells[4] = num(a["rms"], "%.3g");
+        cells[4] = num(a["rms"], "%.3g") + (a["mean"].is_null() ? "" : " (mean " + fmt(a["mean"].get<double>(), "%+.2f") + ")");
       }
     }
     m << "| " << e["id"].get<std::string>() << " | " << e["test"].get<std::string>() << " | " << e["group"].get<std::string>()
@@ -265,9 +281,13 @@ std::string report_markdown(const json& r) {
     for (const auto& c : cells) m << " | " << c;
     m << " | " << (e["ok"].get<bool>() ? "ok" : "FAILED: " + e["message"].get<std::string>()) << " |\n";
   }
-  m << "\n## Optimiser\n\nDesign of " << r["multistart"]["design_costs"].size() << " points, then "
-    << r["multistart"]["local_fits"].size() << " trust-region fits (GSL gsl_multifit_nlinear, Levenberg-Marquardt):\n\n"
-    << "| fit | start cost | final cost | iterations | evaluations | stop |\n|---|---|---|---|---|---|\n";
+  if (r["multistart"]["local_fits"].empty())
+    m << "\n## Optimiser\n\nNo parameter is fitted (`/parameters` is empty): the errors above are predictions of the "
+         "material as given, evaluated once.\n";
+  else
+    m << "\n## Optimiser\n\nDesign of " << r["multistart"]["design_costs"].size() << " points, then "
+      << r["multistart"]["local_fits"].size() << " trust-region fits (GSL gsl_multifit_nlinear, Levenberg-Marquardt):\n\n"
+      << "| fit | start cost | final cost | iterations | evaluations | stop |\n|---|---|---|---|---|---|\n";
   int k = 0;
   for (const json& l : r["multistart"]["local_fits"]) {
     ++k;
@@ -318,15 +338,15 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
       const ExperimentSpec& x = spec.experiments[k];
       const bool table = x.test == "peak_friction";
       std::ostringstream pts;
-      pts << (table ? "row,omega_deg,b,measured,simulated\n" : "series,eps_a_pct,measured,simulated\n");
+      pts << (table ? "row,omega_deg,b,sigma3_kPa,void_ratio,measured,simulated\n" : "series,eps_a_pct,measured,simulated\n");
       for (std::size_t si = 0; si < problem.series(k).size(); ++si) {
         const Series& s = problem.series(k)[si];
         for (std::size_t i = 0; i < s.x.size(); ++i) {
           const double sim = problem.simulated(k, s, i, view);
           if (table) {
             const Simulation& row_sim = problem.simulations()[problem.simulations_of(k)[i]];
-            pts << s.x[i] << ',' << row_sim.bedding_angle_deg << ',' << row_sim.b << ',' << s.measured[i] << ','
-                << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
+            pts << s.x[i] << ',' << row_sim.bedding_angle_deg << ',' << row_sim.b << ',' << row_sim.sigma3_kPa << ','
+                << row_sim.void_ratio << ',' << s.measured[i] << ',' << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
           } else {
             pts << si << ',' << s.x[i] << ',' << s.measured[i] << ',' << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
           }

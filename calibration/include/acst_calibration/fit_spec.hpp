@@ -50,6 +50,10 @@ struct ExperimentSpec {
   // empty), and the axial strain each row runs to while looking for the peak.
   std::map<std::string, std::vector<double>> row_filter;
   double peak_search_strain_pct = 10.0;
+  // peak_friction: the table's columns of each quantity (`columns`). An empty name takes the
+  // experiment's one value for every row: b, bedding_angle_deg, sigma3_kPa, void_ratio.
+  std::string phi_column = "phi_deg", b_column = "b", bedding_column = "omega_deg";
+  std::string sigma3_column, void_ratio_column;
 };
 
 struct OptimizerSettings {

@@ -19,6 +19,7 @@ struct AxisError {
   double rms_normalised = 0.0;  // RMS of (simulated - measured) / scale
   double rms = 0.0;             // RMS in the axis' unit (sigma1'/sigma3', kPa, %, deg)
   double max_abs = 0.0;
+  double mean = 0.0;            // mean of simulated - measured: the bias, in the axis' unit
   double scale = 0.0;
 };
 
