@@ -7,7 +7,9 @@
 #include <memory>
 #include <sstream>
 
+#include "acst_calibration/cross_validation.hpp"
 #include "acst_calibration/fit_spec.hpp"
+#include "acst_common/files.hpp"
 #include "acst_common/cli.hpp"
 #include "acst_common/duration.hpp"
 #include "acst_common/result_folder.hpp"
@@ -22,7 +24,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 void usage(std::ostream& o) {
-  o << "Usage: acst_fit [--help] [--quiet] [--no-plot] [--output DIR] [--threads N] FIT.json\n"
+  o << "Usage: acst_fit [--help] [--quiet] [--no-plot] [--output DIR] [--threads N] [--cross-validate] FIT.json\n"
        "\n"
        "Fits ACST (or isotropic) parameters to lab curves described by a JSON fit description\n"
        "(docs/calibration.md): a small design of parameter sets, then GSL trust-region least-squares\n"
@@ -43,11 +45,49 @@ void usage(std::ostream& o) {
        "                0 = all hardware threads)\n"
        "  --quiet       no progress lines\n"
        "  --no-plot     no PNG figures\n"
+       "  --cross-validate  for each fold of the description's cross_validation, fit without its\n"
+       "                experiments and predict them; write NAME_cv_report.md/.json, NAME_cv.png and\n"
+       "                each fold's fitted set into DIR (default output.directory + _cross_validation)\n"
        "  --help        this text\n"
        "\n"
        "Exit status: 0 fitted and written; 1 the results could not be written; 2 bad command line or\n"
        "invalid fit description (then nothing is run or written).\n"
        "Example: acst_fit data/calibration/toyoura_acst_fit.json\n";
+}
+
+// acst_fit --cross-validate: the folds of the description, each fitted without and predicted.
+int cross_validation_cli(const std::string& file, const common::CliArgs& cli, std::ostream& out, std::ostream& err) {
+  FitSpec spec;
+  nlohmann::json description;
+  std::string directory;
+  try {
+    spec = read_fit_spec(file);
+    if (spec.folds.empty()) throw common::InputError("/cross_validation: required by --cross-validate (no folds are named)");
+    description = nlohmann::json::parse(common::read_input_file(file));
+    if (cli.threads >= 0) spec.optimizer.threads = cli.threads;
+    directory = cli.output.empty() ? spec.output_dir + "_cross_validation" : cli.output;
+    common::require_own_folder(directory, [&](const std::string& e) { return is_cross_validation_output_name(spec.name, e); });
+  } catch (const common::InputError& e) {
+    err << "acst_fit: " << file << ": " << e.what() << '\n';
+    return 2;
+  }
+  CrossValidation cv;
+  try {
+    cv = cross_validate(description, spec, [&](const std::string& line) {
+      if (!cli.quiet) err << "acst_fit: cross-validation of " << spec.name << ": " << line << '\n';
+    });
+  } catch (const common::InputError& e) {  // a fold whose training set is not a valid description
+    err << "acst_fit: " << file << ": cross-validation: " << e.what() << '\n';
+    return 2;
+  }
+  try {
+    for (const auto& w : write_cross_validation(cv, spec, directory, cli.plot)) err << "acst_fit: warning: " << w << '\n';
+  } catch (const std::exception& e) {
+    err << "acst_fit: cannot write the cross-validation into '" << directory << "': " << e.what() << '\n';
+    return 1;
+  }
+  if (!cli.quiet) out << "written to " << directory << "/" << spec.name << "_cv_report.md\n";
+  return 0;
 }
 
 }  // namespace
@@ -58,6 +98,7 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   common::CliSpec spec_cli("acst_fit", "fit description");
   spec_cli.threads = true;
   spec_cli.min_threads = 0;
+  spec_cli.flag_options = {"--cross-validate"};
   common::CliArgs cli;
   const int early = common::parse_command_line(spec_cli, args, help.str(), out, err, cli);
   if (early >= 0) return early;
@@ -66,6 +107,7 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   const std::string& file = cli.inputs.front();
   const int threads = cli.threads;
 
+  if (cli.flags.count("--cross-validate")) return cross_validation_cli(cli.inputs.front(), cli, out, err);
   const auto t0 = Clock::now();
   FitSpec spec;
   try {

@@ -304,8 +304,37 @@ void read_weights(const json& j, FitSpec& s) {
   }
 }
 
+// cross_validation: {"folds": {"NAME": [experiment ids]}}: disjoint folds of existing experiments,
+// each leaving some to fit.
+void read_folds(const json& j, FitSpec& s) {
+  const std::string p = "/cross_validation";
+  f::object(j, p);
+  f::allow_keys(j, {"folds"}, p);
+  if (!j.contains("folds")) f::fail(p + "/folds", "required: {\"FOLD\": [experiment ids]}");
+  f::object(j["folds"], p + "/folds");
+  if (j["folds"].empty()) f::fail(p + "/folds", "name at least one fold");
+  std::set<std::string> ids, used;
+  for (const ExperimentSpec& x : s.experiments) ids.insert(x.id);
+  for (const auto& item : j["folds"].items()) {
+    const std::string fp = p + "/folds/" + item.key();
+    Fold fold;
+    fold.name = common::require_plain_stem(item.key(), fp);
+    if (!item.value().is_array() || item.value().empty()) f::fail(fp, "expected a non-empty array of experiment ids");
+    for (std::size_t k = 0; k < item.value().size(); ++k) {
+      const std::string id = f::string(item.value()[k], fp + "/" + std::to_string(k));
+      if (!ids.count(id)) f::fail(fp + "/" + std::to_string(k), "no experiment has the id '" + id + "'");
+      if (!used.insert(id).second) f::fail(fp + "/" + std::to_string(k), "'" + id + "' is in two folds");
+      fold.experiments.push_back(id);
+    }
+    if (fold.experiments.size() == s.experiments.size()) f::fail(fp, "leaves no experiment to fit");
+    s.folds.push_back(std::move(fold));
+  }
+}
+
 FitSpec parse(const json& j, const std::string& base_dir, const std::string& default_name) {
-  f::allow_keys(j, {"description", "name", "material", "parameters", "experiments", "defaults", "weights", "optimizer", "output"}, "");
+  f::allow_keys(j, {"description", "name", "material", "parameters", "experiments", "defaults", "weights", "optimizer", "output",
+                    "cross_validation"},
+                "");
   for (const char* key : {"material", "parameters", "experiments"})
     if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
   FitSpec s;
@@ -363,6 +392,7 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
     if (j["output"].contains("directory")) s.output_dir = f::string(j["output"]["directory"], "/output/directory");
     if (j["output"].contains("reference_group")) s.reference_group = f::string(j["output"]["reference_group"], "/output/reference_group");
   }
+  if (j.contains("cross_validation")) read_folds(j["cross_validation"], s);
   if (s.output_dir.empty()) s.output_dir = "results/calibration/" + s.name;
   if (s.reference_group.empty()) s.reference_group = s.groups.front();
   if (std::find(s.groups.begin(), s.groups.end(), s.reference_group) == s.groups.end())

@@ -49,6 +49,8 @@ int parse_command_line(const CliSpec& spec, const std::vector<std::string>& args
       } else {
         parsed.values[a] = value;
       }
+    } else if (std::find(spec.flag_options.begin(), spec.flag_options.end(), a) != spec.flag_options.end()) {
+      parsed.flags.insert(a);
     } else if (a.size() > 1 && a[0] == '-') {
       err << tool << ": unknown option '" << a << "' (see --help)\n";
       return exit_bad_input;

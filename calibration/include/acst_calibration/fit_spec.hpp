@@ -67,6 +67,12 @@ struct OptimizerSettings {
   unsigned seed = 1;        // of the design
 };
 
+// A fold of a cross-validation: experiments fitted without, then predicted (docs/calibration.md).
+struct Fold {
+  std::string name;                      // a plain stem: it names a parameter file
+  std::vector<std::string> experiments;  // ids
+};
+
 struct FitSpec {
   std::string source;    // fit description file ("" when parsed from text)
   std::string base_dir;  // relative paths resolve against it
@@ -81,6 +87,7 @@ struct FitSpec {
   OptimizerSettings optimizer;
   std::string output_dir;  // output.directory; default results/calibration/NAME (one result set per folder)
   std::string reference_group;  // whose per-group values go into the main parameter file
+  std::vector<Fold> folds;      // cross_validation.folds (acst_fit --cross-validate)
 };
 
 // Reads and validates a fit description; relative paths resolve against its directory.

@@ -4,6 +4,7 @@
 // Exit status of every tool: 0 done, 1 failed while running, 2 bad command line or bad input.
 #include <iosfwd>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,7 @@ struct CliSpec {
   bool threads = false;                    // --threads N is an option of this tool
   int min_threads = 1;                     // acst_fit takes 0 (= all hardware threads)
   std::vector<std::string> value_options;  // tool-specific options with a value, e.g. "--resume"
+  std::vector<std::string> flag_options;   // tool-specific options without one, e.g. "--cross-validate"
 };
 
 struct CliArgs {
@@ -27,6 +29,7 @@ struct CliArgs {
   std::string output;  // "" when not given
   int threads = -1;    // -1 when not given
   std::map<std::string, std::string> values;  // the tool-specific options given
+  std::set<std::string> flags;                // the tool-specific flags given
   std::vector<std::string> inputs;
 };
 
