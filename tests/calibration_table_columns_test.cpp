@@ -147,5 +147,26 @@ TEST(Prediction, NothingFittedEvaluatesTheMaterialOnce) {
   fs::remove_all(table.parent_path());
 }
 
+// The bundled descriptions stay valid: the Table 1 prediction selects every one of its 78 rows,
+// the all-data candidate its 57 rows at 9.8-392 kPa, and every description with folds names
+// experiments it has.
+TEST(BundledDescriptions, TableRowsAndFolds) {
+  std::size_t rows = 0, descriptions = 0;
+  for (const auto& entry : fs::directory_iterator(base_dir)) {
+    if (entry.path().extension() != ".json") continue;
+    const FitSpec s = read_fit_spec(entry.path().string());
+    ++descriptions;
+    if (s.name == "toyoura_acst_table1_prediction" || s.name == "toyoura_acst_all_data") {
+      const Problem p(s);
+      std::size_t table = 0;
+      for (const Simulation& sim : p.simulations()) table += sim.row >= 0 && sim.sigma3_kPa != 98.0;  // lt88's rows: 98 kPa
+      EXPECT_EQ(table, s.name == "toyoura_acst_all_data" ? 57u : 78u) << s.name;
+      rows += table;
+    }
+  }
+  EXPECT_GE(descriptions, 5u);
+  EXPECT_EQ(rows, 78u + 57u);
+}
+
 }  // namespace
 }  // namespace acst::calibration
