@@ -5,6 +5,8 @@ Runs the bundled scene with the options that trade accuracy for speed, alone and
   - the symmetric half domain (footing/symmetric_half);
   - a faster footing (footing/speed x f, with and without a speed ramp over 0.01 B) and mass
     scaling (solver/mass_scaling f), f = 2 ... 32, each on the half domain;
+  - one stress update per step instead of two halves (solver/stress_update first, last), on the
+    half domain;
 and compares each with the reference settings (full domain, 0.045 m/s, no mass scaling, same
 cell size, same build): change of q_ult (the peak over S/B 0-0.3), RMS difference of the curves over S/B 0-0.3 (sampled
 every 0.005 B) over the reference q_ult, the largest kinetic-to-work ratio past S/B 0.02, wall
@@ -31,18 +33,20 @@ CURVES = ("reference", "half_slow2", "half_slow4", "half_speed2", "half_speed4",
 
 
 def cases():
-    """(name, symmetric half, speed factor, mass scaling, ramp S/B); the reference first. The
-    factor series run on the half domain, which gives the whole's curve (docs/mpm.md)."""
+    """(name, symmetric half, speed factor, mass scaling, ramp S/B, stress update); the reference
+    first. The factor series run on the half domain, which gives the whole's curve (docs/mpm.md)."""
     out = [("reference", False, 1, 1, 0.0), ("half", True, 1, 1, 0.0)]
     out += [(f"half_slow{d}", True, 1 / d, 1, 0.0) for d in (2, 4)]  # is the reference speed quasi-static?
     out += [(f"half_speed{f}", True, f, 1, 0.0) for f in FACTORS]
     out += [(f"half_mass{f}", True, 1, f, 0.0) for f in FACTORS]
     out += [(f"half_speed{f}_ramp", True, f, 1, 0.01) for f in (8, 16, 32)]
     out += [(f"half_speed{f}_mass{m}", True, f, m, 0.0) for f, m in ((4, 4), (8, 2))]
+    out = [c + ("average",) for c in out]
+    out += [(f"half_stress_{w}", True, 1, 1, 0.0, w) for w in ("first", "last")]
     return out
 
 
-def scene_for(name, half, speed, mass, ramp):
+def scene_for(name, half, speed, mass, ramp, stress_update):
     with open(BASE) as f:
         s = json.load(f)
     here = os.path.dirname(BASE)
@@ -57,6 +61,7 @@ def scene_for(name, half, speed, mass, ramp):
     s["footing"]["symmetric_half"] = half
     s["footing"]["ramp_S_over_B"] = ramp
     s["solver"]["mass_scaling"] = mass
+    s["solver"]["stress_update"] = stress_update
     return s
 
 
@@ -75,7 +80,7 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     table = []
-    for name, half, speed, mass, ramp in cases():
+    for name, half, speed, mass, ramp, stress_update in cases():
         run_dir = os.path.join(a.out, name)
         summary = os.path.join(run_dir, "summary.json")
         failed = os.path.join(run_dir, "load_settlement.failed.csv")
@@ -83,7 +88,7 @@ def main():
         if (not a.only or name in a.only.split(",")) and not done_before:
             path = os.path.join(a.out, name + ".json")
             with open(path, "w") as f:
-                json.dump(scene_for(name, half, speed, mass, ramp), f, indent=2)
+                json.dump(scene_for(name, half, speed, mass, ramp, stress_update), f, indent=2)
             print(f"== {name}", flush=True)
             done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
             if done.returncode != 0:
@@ -102,7 +107,7 @@ def main():
         # and may spike above it (docs/mpm.md, "Symmetric half domain").
         k = max((i for i in range(len(S)) if S[i] <= 0.3), key=lambda i: q[i])
         table.append({"case": name, "symmetric_half": half, "speed_factor": speed, "mass_scaling": mass, "ramp_S_over_B": ramp,
-                      "q_ult_kPa": q[k], "S_ult_over_B": S[k], "steps": s["steps"],
+                      "stress_update": stress_update, "q_ult_kPa": q[k], "S_ult_over_B": S[k], "steps": s["steps"],
                       "particles": s["particles"], "wall_s": s["wall_s"], "threads": s["threads"],
                       "max_kinetic_ratio": max_kinetic_ratio(record), "failed_at_S_over_B": S[-1] if record == failed else "",
                       "curve": (S, q)})
@@ -122,7 +127,7 @@ def main():
               f"RMS {r['curve_rms_pct']:5.2f} %  K/W {r['max_kinetic_ratio']:.1e}  steps {r['steps']:>6}  "
               f"wall {r['wall_s']:6.1f} s (x{r['speedup']:.1f})" +
               (f"  failed at S/B {r['failed_at_S_over_B']:.3f}" if r["failed_at_S_over_B"] != "" else ""))
-    fields = ["case", "symmetric_half", "speed_factor", "mass_scaling", "ramp_S_over_B", "q_ult_kPa", "q_ult_change_pct", "S_ult_over_B",
+    fields = ["case", "symmetric_half", "speed_factor", "mass_scaling", "ramp_S_over_B", "stress_update", "q_ult_kPa", "q_ult_change_pct", "S_ult_over_B",
               "curve_rms_pct", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads", "speedup", "failed_at_S_over_B"]
     with open(os.path.join(a.out, "speedup.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")

@@ -52,6 +52,8 @@ TEST(MpmScene, ErrorsNameThePath) {
                "needs a /footing");
   expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "solver": {"particle_update": "APIC"},)"),
                "/solver/particle_update", "FLIP, PIC, XPIC");
+  expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "solver": {"stress_update": "middle"},)"),
+               "/solver/stress_update", "average, first, last");
   expect_error(replaced(R"("materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}})",
                         R"("materials": {"soil": "no/such/file.json"})"),
                "/materials/soil", "cannot open");

@@ -78,18 +78,18 @@ BodySpec read_body(const json& j, const std::string& p, const Scene& s) {
 }
 
 Settings read_solver(const json& j, const std::string& p) {
-  f::allow_keys(j, {"cfl", "particle_update", "xpic_order", "xpic_every", "grid_damping", "particle_damping",
-                    "wave_speed_every", "mass_scaling", "threads"},
+  f::allow_keys(j, {"cfl", "particle_update", "stress_update", "xpic_order", "xpic_every", "grid_damping",
+                    "particle_damping", "wave_speed_every", "mass_scaling", "threads"},
                 p);
   Settings s;
   if (j.contains("cfl")) s.cfl = f::number(j["cfl"], p + "/cfl", {0.0, 1.0, true, false});
-  if (j.contains("particle_update")) {
-    const std::string u = f::string(j["particle_update"], p + "/particle_update");
-    if (u == "FLIP") s.update = ParticleUpdate::FLIP;
-    else if (u == "PIC") s.update = ParticleUpdate::PIC;
-    else if (u == "XPIC") s.update = ParticleUpdate::XPIC;
-    else f::fail(p + "/particle_update", "'" + u + "' is not one of FLIP, PIC, XPIC");
-  }
+  if (j.contains("particle_update"))
+    s.update = f::choice<ParticleUpdate>(j["particle_update"], p + "/particle_update",
+                                         {{"FLIP", ParticleUpdate::FLIP}, {"PIC", ParticleUpdate::PIC}, {"XPIC", ParticleUpdate::XPIC}});
+  if (j.contains("stress_update"))
+    s.stress_update = f::choice<StressUpdate>(
+        j["stress_update"], p + "/stress_update",
+        {{"average", StressUpdate::average}, {"first", StressUpdate::first}, {"last", StressUpdate::last}});
   if (j.contains("xpic_order")) s.xpic_order = static_cast<int>(f::integer(j["xpic_order"], p + "/xpic_order", 1, 16));
   if (j.contains("xpic_every")) s.xpic_every = static_cast<int>(f::integer(j["xpic_every"], p + "/xpic_every", 1, 100000));
   if (j.contains("grid_damping")) s.grid_damping = f::number(j["grid_damping"], p + "/grid_damping", {0.0, 1e4}, "1/s");
@@ -114,19 +114,13 @@ FootingSpec read_footing(const json& j, const std::string& p) {
   fs.speed = f::number(j["speed"], p + "/speed", f::positive(), "m/s");
   if (j.contains("inclination_deg"))
     fs.inclination_deg = f::number(j["inclination_deg"], p + "/inclination_deg", {-80.0, 80.0}, "deg");
-  if (j.contains("contact")) {
-    const std::string c = f::string(j["contact"], p + "/contact");
-    if (c == "penalty") fs.contact = FootingContact::penalty;
-    else if (c == "node_rows") fs.contact = FootingContact::node_rows;
-    else f::fail(p + "/contact", "'" + c + "' is not one of penalty, node_rows");
-  }
-  if (j.contains("interface")) {
-    const std::string i = f::string(j["interface"], p + "/interface");
-    if (i == "rough") fs.interface = FootingInterface::rough;
-    else if (i == "smooth") fs.interface = FootingInterface::smooth;
-    else if (i == "coulomb") fs.interface = FootingInterface::coulomb;
-    else f::fail(p + "/interface", "'" + i + "' is not one of rough, smooth, coulomb");
-  }
+  if (j.contains("contact"))
+    fs.contact = f::choice<FootingContact>(j["contact"], p + "/contact",
+                                           {{"penalty", FootingContact::penalty}, {"node_rows", FootingContact::node_rows}});
+  if (j.contains("interface"))
+    fs.interface = f::choice<FootingInterface>(
+        j["interface"], p + "/interface",
+        {{"rough", FootingInterface::rough}, {"smooth", FootingInterface::smooth}, {"coulomb", FootingInterface::coulomb}});
   if (fs.interface == FootingInterface::coulomb) {
     if (!j.contains("friction_coefficient")) f::fail(p, "interface 'coulomb' needs 'friction_coefficient'");
     fs.friction_coefficient = f::number(j["friction_coefficient"], p + "/friction_coefficient", {0.0, 10.0});
@@ -282,11 +276,8 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
       s.base_fixed = base == "fixed";
     }
     if (j["walls"].contains("sides")) {
-      const std::string sides = f::string(j["walls"]["sides"], "/walls/sides");
-      if (sides == "smooth") s.sides = SideWall::smooth;
-      else if (sides == "fixed") s.sides = SideWall::fixed;
-      else if (sides == "none") s.sides = SideWall::none;
-      else f::fail("/walls/sides", "'" + sides + "' is not one of smooth, fixed, none");
+      s.sides = f::choice<SideWall>(j["walls"]["sides"], "/walls/sides",
+                                    {{"smooth", SideWall::smooth}, {"fixed", SideWall::fixed}, {"none", SideWall::none}});
     }
   }
   if (j.contains("surcharge_kPa")) s.surcharge = f::number(j["surcharge_kPa"], "/surcharge_kPa", {0.0, 1e5}, "kPa");

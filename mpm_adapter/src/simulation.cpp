@@ -264,19 +264,24 @@ void Simulation::xpic_velocity(int order) {
   }
 }
 
-// One step of update-stress-average (docs/mpm.md, "One step"): the phases in their order.
+// One step (docs/mpm.md, "One step"): the phases in their order; the stress is updated in two
+// halves (update-stress-average), or once before the internal force or after the re-map.
 void Simulation::step() {
   boundaries_.footing.at_time(clock_.time);
   refresh_time_step();
   compute_shape_functions();
   map_mass_and_momentum();
   apply_constraints();
-  update_stress(work_.vx.data(), work_.vy.data(), 0.5 * clock_.dt);  // first half, with v_L
+  const StressUpdate when = settings_.stress_update;
+  const double dt = clock_.dt, before = when == StressUpdate::average ? 0.5 * dt : dt;
+  if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), before);  // with v_L
   footing_contact();
   internal_force_and_reactions();
   update_particles();
-  remap_momentum();
-  update_stress(work_.ux.data(), work_.uy.data(), 0.5 * clock_.dt);  // second half, with the re-mapped v
+  if (when != StressUpdate::first) {
+    remap_momentum();
+    update_stress(work_.ux.data(), work_.uy.data(), when == StressUpdate::average ? 0.5 * dt : dt);  // with the re-mapped v
+  }
   advance_boundaries();
 }
 

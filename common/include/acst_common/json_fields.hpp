@@ -209,6 +209,19 @@ inline std::string string(const json& v, const std::string& path) {
   return v.get<std::string>();
 }
 
+// A string that names one of a fixed set of choices; returns the value it names, else fails with
+// the path and the names allowed.
+template <class T>
+T choice(const json& j, const std::string& path, std::initializer_list<std::pair<const char*, T>> choices) {
+  const std::string name = string(j, path);
+  std::string allowed;
+  for (const auto& [n, value] : choices) {
+    if (name == n) return value;
+    allowed += (allowed.empty() ? "" : ", ") + std::string(n);
+  }
+  fail(path, "'" + name + "' is not one of " + allowed);
+}
+
 inline bool boolean(const json& v, const std::string& path) {
   if (!v.is_boolean()) fail(path, std::string("expected true or false, got ") + v.type_name());
   return v.get<bool>();

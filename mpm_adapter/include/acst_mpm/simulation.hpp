@@ -29,9 +29,16 @@ struct SimulationError : std::runtime_error {
 
 enum class ParticleUpdate { FLIP, PIC, XPIC };
 
+// When the material is called in a step (docs/mpm.md, "One step"): two halves around the particle
+// update (update-stress-average, the default), or once with the whole step before the internal
+// force (update-stress-first) or after the momentum is re-mapped (modified update-stress-last):
+// half the material calls.
+enum class StressUpdate { average, first, last };
+
 struct Settings {
   double cfl = 0.5;
   ParticleUpdate update = ParticleUpdate::XPIC;
+  StressUpdate stress_update = StressUpdate::average;
   int xpic_order = 4;   // m of XPIC(m)
   int xpic_every = 20;  // XPIC on every k-th step, FLIP between
   double grid_damping = 0.5;      // alpha_g, 1/s
