@@ -79,6 +79,9 @@ int cross_validation_cli(const std::string& file, const common::CliArgs& cli, st
   } catch (const common::InputError& e) {  // a fold whose training set is not a valid description
     err << "acst_fit: " << file << ": cross-validation: " << e.what() << '\n';
     return 2;
+  } catch (const std::exception& e) {  // nothing was written
+    err << "acst_fit: " << file << ": cross-validation failed: " << e.what() << '\n';
+    return 1;
   }
   try {
     for (const auto& w : write_cross_validation(cv, spec, directory, cli.plot)) err << "acst_fit: warning: " << w << '\n';

@@ -186,7 +186,14 @@ CrossValidation cross_validate(const json& description, const FitSpec& spec, con
   const Fitted all = fit_description(subset(description, spec, [](const ExperimentSpec&) { return true; }), spec, spec.name);
   cv.all_data_cost = all.result.cost;
   cv.all_data_values = values_of(all);
-  if (progress) progress("all data: cost " + num(all.result.cost, 4) + ", " + num(elapsed(), 3) + " s");
+  const std::size_t fits = spec.folds.size() + 1;
+  // Elapsed and an estimate of what is left (fits take about equally long) after `done` fits.
+  auto timing = [&](std::size_t done) {
+    const double t = elapsed();
+    return num(t, 3) + " s elapsed, about " + num(t / static_cast<double>(done) * static_cast<double>(fits - done), 2) +
+           " s left";
+  };
+  if (progress) progress("fit 1/" + std::to_string(fits) + ", all data: cost " + num(all.result.cost, 4) + "; " + timing(1));
   for (std::size_t k = 0; k < spec.folds.size(); ++k) {
     const Fold& fold = spec.folds[k];
     auto in_fold = [&](const ExperimentSpec& x) {
@@ -222,10 +229,10 @@ CrossValidation cross_validate(const json& description, const FitSpec& spec, con
       r.fitted.push_back(error_of(all.errors, id));
     }
     if (progress)
-      progress("fold " + std::to_string(k + 1) + "/" + std::to_string(spec.folds.size()) + " '" + fold.name + "': fitted to " +
+      progress("fit " + std::to_string(k + 2) + "/" + std::to_string(fits) + ", without '" + fold.name + "': fitted to " +
                std::to_string(r.training_experiments) + " experiments (cost " + num(r.training_cost, 4) +
                "), predicted RMS/scale " + num(pooled_rms_normalised(r.predicted)) + " against " +
-               num(pooled_rms_normalised(r.fitted)) + " as fitted; " + num(elapsed(), 3) + " s");
+               num(pooled_rms_normalised(r.fitted)) + " as fitted; " + timing(k + 2));
     cv.folds.push_back(std::move(r));
   }
   cv.seconds = elapsed();
