@@ -4,8 +4,6 @@
 // values that fit found.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,6 +12,8 @@
 #include "acst_calibration/cross_validation.hpp"
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
+#include "fit_descriptions.hpp"
+#include "scratch.hpp"
 
 namespace acst::calibration {
 namespace {
@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string base_dir = std::string(ACST_SOURCE_DIR) + "/data/calibration";
+const std::string& base_dir = test::calibration_dir;
 
 json experiment(const std::string& file, const std::string& group) {
   json e = {{"data", file}, {"group", group}};
@@ -114,37 +114,27 @@ TEST(CrossValidation, EachFoldIsTheFitWithoutItAndItsPrediction) {
   EXPECT_GT(pooled_rms_normalised(cv.folds[1].predicted), pooled_rms_normalised(cv.folds[1].fitted));
 }
 
-std::string error_of(const json& d) {
-  try {
-    parse_fit_spec(d.dump(), base_dir, "cv");
-  } catch (const common::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(CrossValidation, BadFoldsNameThePath) {
   json d = description();
   d["cross_validation"]["folds"]["dense"] = {"ft84_fig5a_sc9p9"};
-  EXPECT_NE(error_of(d).find("/cross_validation/folds/dense/0: no experiment has the id 'ft84_fig5a_sc9p9'"), std::string::npos)
-      << error_of(d);
+  EXPECT_NE(test::fit_spec_error(d).find("/cross_validation/folds/dense/0: no experiment has the id 'ft84_fig5a_sc9p9'"), std::string::npos)
+      << test::fit_spec_error(d);
   d = description();
   d["cross_validation"]["folds"]["loose"] = {"wang34_Tokyo_TMD5", "ft84_fig5a_sc4p0"};
-  EXPECT_NE(error_of(d).find("is in two folds"), std::string::npos) << error_of(d);
+  EXPECT_NE(test::fit_spec_error(d).find("is in two folds"), std::string::npos) << test::fit_spec_error(d);
   d = description();
   d["cross_validation"]["folds"] = {{"everything", {"ft84_fig5a_sc1p0", "ft84_fig5a_sc4p0", "wang34_Tokyo_TMD5"}}};
-  EXPECT_NE(error_of(d).find("/cross_validation/folds/everything: leaves no experiment to fit"), std::string::npos) << error_of(d);
+  EXPECT_NE(test::fit_spec_error(d).find("/cross_validation/folds/everything: leaves no experiment to fit"), std::string::npos) << test::fit_spec_error(d);
   d = description();
   d["cross_validation"]["folds"] = {{"../up", {"ft84_fig5a_sc1p0"}}};
-  EXPECT_NE(error_of(d).find("/cross_validation/folds/../up"), std::string::npos) << error_of(d);
+  EXPECT_NE(test::fit_spec_error(d).find("/cross_validation/folds/../up"), std::string::npos) << test::fit_spec_error(d);
   d = description();
   d["cross_validation"]["k"] = 5;
-  EXPECT_NE(error_of(d).find("/cross_validation/k"), std::string::npos) << error_of(d);
+  EXPECT_NE(test::fit_spec_error(d).find("/cross_validation/k"), std::string::npos) << test::fit_spec_error(d);
 }
 
 TEST(CrossValidationCli, WritesTheReportAndRefusesAForeignFolder) {
-  const fs::path dir = fs::temp_directory_path() / ("acst_cv_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder("cv_cli");
   json d = description();
   d["material"]["file"] = base_dir + "/../parameters/toyoura_acst_guide.json";
   for (auto& e : d["experiments"]) e["data"] = base_dir + "/" + e["data"].get<std::string>();

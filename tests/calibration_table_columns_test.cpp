@@ -2,8 +2,6 @@
 // docs/calibration.md), and descriptions that fit nothing: a prediction of the material as given.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <cstdio>
 #include <fstream>
@@ -13,6 +11,8 @@
 #include "acst_calibration/fit_spec.hpp"
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
+#include "fit_descriptions.hpp"
+#include "scratch.hpp"
 
 namespace acst::calibration {
 namespace {
@@ -20,14 +20,12 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string base_dir = std::string(ACST_SOURCE_DIR) + "/data/calibration";
+const std::string& base_dir = test::calibration_dir;
 
 // A Table-1-like file (triaxial compression, no b nor bedding column): rows 0 and 1 differ in
 // density, 0 and 2 in pressure; row 3 lies below the 29.4 kPa at which e was measured.
 fs::path write_table() {
-  const fs::path dir = fs::temp_directory_path() / ("acst_table_columns_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path file = dir / "peaks.csv";
+  const fs::path file = test::scratch_folder("table_columns") / "peaks.csv";
   std::ofstream(file) << "# kind: TC, peak values only\n# bedding_angle_deg: 0\n"
                          "test,s3_kPa,e_0p3,phi_uncorrected\n"
                          "1,50,0.70,40\n2,50,0.85,36\n3,400,0.70,38\n4,10,0.70,42\n";
@@ -47,17 +45,9 @@ json description(const fs::path& table) {
           {"optimizer", {{"design_points", 0}, {"starts", 1}, {"threads", 2}}}};
 }
 
-std::string error_of(const json& j) {
-  try {
-    parse_fit_spec(j.dump(), base_dir, "t");
-  } catch (const common::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(TableColumns, EveryRowRunsAtItsOwnStressAndDensity) {
-  const Problem p(parse_fit_spec(description(write_table()).dump(), base_dir, "t"));
+  const fs::path table = write_table();
+  const Problem p(parse_fit_spec(description(table).dump(), base_dir, "t"));
   ASSERT_EQ(p.simulations().size(), 4u);
   const double s3[] = {50, 50, 400, 10}, e0[] = {0.70, 0.85, 0.70, 0.70};
   for (std::size_t i = 0; i < 4; ++i) {
@@ -78,7 +68,7 @@ TEST(TableColumns, EveryRowRunsAtItsOwnStressAndDensity) {
   EXPECT_GT(out[0].peak_phi_deg - out[1].peak_phi_deg, 2.0);  // e 0.70 against 0.85 at 50 kPa
   EXPECT_GT(out[0].peak_phi_deg - out[2].peak_phi_deg, 0.5);  // 50 against 400 kPa at e 0.70
   EXPECT_GT(out[3].peak_phi_deg, out[0].peak_phi_deg);        // 10 kPa: the strongest
-  fs::remove_all(fs::temp_directory_path() / ("acst_table_columns_" + std::to_string(::getpid())));
+  fs::remove_all(table.parent_path());
 }
 
 TEST(TableColumns, BadColumnsNameThePathAndTheReason) {
@@ -103,7 +93,7 @@ TEST(TableColumns, BadColumnsNameThePathAndTheReason) {
       if (item.value().is_null()) j["experiments"][0].erase(item.key());
       else j["experiments"][0][item.key()] = item.value();
     }
-    const std::string e = error_of(j);
+    const std::string e = test::fit_spec_error(j);
     EXPECT_NE(e.find(c.path), std::string::npos) << e;
     EXPECT_NE(e.find(c.says), std::string::npos) << e;
   }

@@ -211,12 +211,12 @@ CrossValidation cross_validate(const json& description, const FitSpec& spec, con
     std::vector<std::string> groups;
     for (const ExperimentSpec& x : spec.experiments)
       if (in_fold(x) && std::find(groups.begin(), groups.end(), x.group) == groups.end()) groups.push_back(x.group);
+    bool per_group = false;
+    for (const Variable& v : training.problem->variables()) per_group = per_group || !v.group.empty();
+    const auto& trained = training.spec.groups;
     std::map<std::string, ExperimentError> predicted;
     for (const std::string& g : groups) {
-      const auto& trained = training.spec.groups;
       const bool known = std::find(trained.begin(), trained.end(), g) != trained.end();
-      bool per_group = false;
-      for (const Variable& v : training.problem->variables()) per_group = per_group || !v.group.empty();
       if (!known && per_group) r.borrowed_groups.push_back(g);
       json d = subset(description, spec, [&](const ExperimentSpec& x) { return in_fold(x) && x.group == g; });
       d["material"] = fitted_material(*training.problem, training.result.theta, known ? g : training.spec.reference_group);

@@ -103,12 +103,15 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
     const double w = experiment_weight(spec, k);
     const bool table = x.test == "peak_friction";
     const driver::LabCurve lab = table ? driver::read_commented_csv(x.data_file, true) : driver::read_lab_curve(x.data_file);
-    auto add_simulation = [&](int row, double b, double bedding, const json& j, long increments) {
+    // `run`: the experiment with the conditions this run starts from (a table row's own).
+    auto add_simulation = [&](int row, const ExperimentSpec& run, double b, double bedding, const json& j, long increments) {
       Simulation s;
       s.experiment = k;
       s.row = row;
       s.b = b;
       s.bedding_angle_deg = bedding;
+      s.sigma3_kPa = run.sigma3_kPa;
+      s.void_ratio = run.void_ratio;
       s.scene = build_scene(j, x, x.id);
       s.shear_step = static_cast<int>(s.scene.blocks.size()) - 1;
       s.increments = increments;
@@ -125,6 +128,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       };
       const auto b = per_row(x.b_column, x.b), omega = per_row(x.bedding_column, x.bedding_angle_deg);
       const auto sigma3 = per_row(x.sigma3_column, x.sigma3_kPa), e0 = per_row(x.void_ratio_column, x.void_ratio);
+      const int n = run_increments(x.peak_search_strain_pct, x.strain_increment_pct, x);
       for (std::size_t i = 0; i < measured.size(); ++i) {
         bool selected = !std::isnan(b[i]) && !std::isnan(omega[i]) && !std::isnan(measured[i]) && !std::isnan(sigma3[i]) &&
                         !std::isnan(e0[i]);
@@ -133,7 +137,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
           selected = selected && std::find(values.begin(), values.end(), v) != values.end();
         }
         if (!selected) continue;
-        if (!(b[i] >= 0.0 && b[i] <= 1.0 && sigma3[i] > 0.0 && e0[i] > 0.0 && e0[i] < 2.97))
+        if (!(b[i] >= 0.0 && b[i] <= 1.0 && sigma3[i] > 0.0 && void_ratio_admissible(e0[i])))
           throw common::InputError(x.path + "/data: row " + std::to_string(i + 1) + " of '" + x.data_file + "' has b " +
                                    common::fields::shown(b[i]) + ", sigma3 " + common::fields::shown(sigma3[i]) +
                                    " kPa, void ratio " + common::fields::shown(e0[i]) +
@@ -141,10 +145,8 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
         ExperimentSpec row = x;
         row.sigma3_kPa = sigma3[i];
         row.void_ratio = e0[i];
-        const int n = run_increments(x.peak_search_strain_pct, x.strain_increment_pct, x);
-        add_simulation(static_cast<int>(i), b[i], omega[i], scene_json(spec, row, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
-        simulations_.back().sigma3_kPa = sigma3[i];
-        simulations_.back().void_ratio = e0[i];
+        add_simulation(static_cast<int>(i), row, b[i], omega[i],
+                       scene_json(spec, row, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
         phi.x.push_back(static_cast<double>(i));
         phi.measured.push_back(measured[i]);
       }
@@ -181,7 +183,7 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       for (const Series& s : series_[k]) last = std::max(last, s.x.back());
       const double to = last + 2.0 * x.strain_increment_pct;
       const int n = run_increments(to, x.strain_increment_pct, x);
-      add_simulation(-1, x.b, x.bedding_angle_deg, scene_json(spec, x, x.test, x.b, x.bedding_angle_deg, to, n), n);
+      add_simulation(-1, x, x.b, x.bedding_angle_deg, scene_json(spec, x, x.test, x.b, x.bedding_angle_deg, to, n), n);
     }
     for (const Series& s : series_[k]) residual_count_ += static_cast<int>(s.x.size());
   }

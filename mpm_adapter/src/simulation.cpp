@@ -273,14 +273,14 @@ void Simulation::step() {
   map_mass_and_momentum();
   apply_constraints();
   const StressUpdate when = settings_.stress_update;
-  const double dt = clock_.dt, before = when == StressUpdate::average ? 0.5 * dt : dt;
-  if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), before);  // with v_L
+  const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
+  if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
   footing_contact();
   internal_force_and_reactions();
   update_particles();
   if (when != StressUpdate::first) {
     remap_momentum();
-    update_stress(work_.ux.data(), work_.uy.data(), when == StressUpdate::average ? 0.5 * dt : dt);  // with the re-mapped v
+    update_stress(work_.ux.data(), work_.uy.data(), part);  // with the re-mapped v
   }
   advance_boundaries();
 }

@@ -42,7 +42,7 @@ struct Simulation {
   std::size_t experiment = 0;
   int row = -1;  // table row, -1 for curves
   double b = 0.0, bedding_angle_deg = 0.0;  // of the shearing step
-  double sigma3_kPa = 0.0, void_ratio = 0.0;  // table rows: the row's confining stress and void ratio
+  double sigma3_kPa = 0.0, void_ratio = 0.0;  // the conditions it starts from (a table row: its own)
   driver::Scene scene;
   int shear_step = 0;  // index of the shearing step (1 after an isotropic consolidation)
   long increments = 0;
