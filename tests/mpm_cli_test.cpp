@@ -11,6 +11,7 @@
 #include "acst_driver/cli.hpp"
 #include "acst_mpm/cli.hpp"
 #include "acst_mpm/output.hpp"
+#include "cli_capture.hpp"
 #include "scratch.hpp"
 
 namespace fs = std::filesystem;
@@ -18,19 +19,9 @@ using acst::mpm::mpm_cli;
 
 namespace {
 
-struct Cli {
-  int rc = -1;
-  std::string out, err;
-};
+using acst::test::Cli;
 
-Cli run(const std::vector<std::string>& args) {
-  std::ostringstream o, e;
-  Cli c;
-  c.rc = mpm_cli(args, o, e);
-  c.out = o.str();
-  c.err = e.str();
-  return c;
-}
+Cli run(const std::vector<std::string>& args) { return acst::test::run_cli(mpm_cli, args); }
 
 fs::path scratch(const std::string& tag) { return acst::test::scratch_folder("mpm_cli_" + tag); }
 

@@ -57,6 +57,10 @@ TEST(MpmScene, ErrorsNameThePath) {
   expect_error(replaced(R"("materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}})",
                         R"("materials": {"soil": "no/such/file.json"})"),
                "/materials/soil", "cannot open");
+  expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "output": {"contour_fields": ["N", "stress"]},)"),
+               "/output/contour_fields/1", "shear_strain, displacement, fabric_norm, N, void_ratio");
+  expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "output": {"contour_fields": ["N", "N"]},)"),
+               "/output/contour_fields/1", "named twice");
   expect_error("{not json", "/", "not valid JSON");
 }
 

@@ -1,5 +1,6 @@
 #include "acst_mpm/fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "acst.h"
@@ -36,6 +37,24 @@ ParticleFields particle_fields(const Simulation& sim) {
     }
   }
   return f;
+}
+
+SideMeasures side_measures(const Particles& P, const std::vector<double>& y_now, const std::vector<double>& shear_strain,
+                           double centre_x, bool mirror) {
+  SideMeasures m;
+  for (std::size_t i = 0; i < P.n && i < y_now.size() && i < shear_strain.size(); ++i) {
+    const bool left = P.x_initial[i] < centre_x;
+    const double sheared = shear_strain[i] > sheared_area_gamma ? P.volume_initial[i] : 0.0;
+    const double heave = std::max(0.0, y_now[i] - P.y_initial[i]);
+    (left ? m.sheared_area_left : m.sheared_area_right) += sheared;
+    double& h = left ? m.heave_left : m.heave_right;
+    h = std::max(h, heave);
+  }
+  if (mirror) {
+    m.sheared_area_left = m.sheared_area_right;
+    m.heave_left = m.heave_right;
+  }
+  return m;
 }
 
 }  // namespace acst::mpm

@@ -48,7 +48,7 @@ bool is_run_output_name(const std::string& name) {
     if (name == fixed) return true;
   if (starts("particles_") && ends(".vtp") && middle(10, 4, "0123456789")) return true;
   if (starts("particle_") && ends(".csv") && common::is_plain_stem(name.substr(9, name.size() - 13))) return true;
-  for (const char* figure : {"shear_strain_", "displacement_"})
+  for (const char* figure : {"shear_strain_", "displacement_", "fabric_norm_", "N_", "void_ratio_"})
     for (const char* ext : {".png", ".gp", ".csv"})
       if (starts(figure) && ends(ext) &&
           middle(std::string(figure).size(), std::string(ext).size(),
@@ -178,7 +178,7 @@ std::string write_load_figure(const Scene& scene, const std::string& dir, const 
 
 std::string write_contour_figure(const std::string& dir, const std::string& stem, const std::string& title,
                                  const std::string& label, double cell, const std::vector<double>& x,
-                                 const std::vector<double>& y, const std::vector<double>& value) {
+                                 const std::vector<double>& y, const std::vector<double>& value, bool signed_unit) {
   std::string data = "x_m,y_m,value\n";
   for (std::size_t i = 0; i < x.size(); ++i) {
     put(data, x[i]), data += ',', put(data, y[i]), data += ',', put(data, value[i]);
@@ -202,7 +202,10 @@ std::string write_contour_figure(const std::string& dir, const std::string& stem
      << "set datafile separator ','\nset datafile columnheaders\nset size ratio -1\n"
      << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset cblabel " << common::gp_quoted(label) << "\n"
      << "set title " << common::gp_quoted(title) << "\nset palette rgb 33,13,10\n";
-  if (cap > 0.0) gp << "set cbrange [0:" << cap << "]\n";
+  if (signed_unit)
+    gp << "set cbrange [-1:1]\n";
+  else if (cap > 0.0)
+    gp << "set cbrange [0:" << cap << "]\n";
   gp << "d = " << 0.5 * cell << "\nplot " << common::gp_quoted(fs::absolute(csv).string())
      << " using 1:2:($1-d):($1+d):($2-d):($2+d):3 with boxxyerror fs solid noborder fc palette notitle\n";
   return acst::common::run_gnuplot(gp.str(), (fs::path(dir) / (stem + ".gp")).string(),

@@ -205,9 +205,24 @@ class Run {
       if (!opt_.plot) continue;
       const ParticleFields f = particle_fields(sim_);
       char tag[48];
-      std::snprintf(tag, sizeof tag, "SB%.3f", targets[k]);
-      contour_pair(tag, "S/B = " + std::to_string(S_over_B()).substr(0, 5), sim_.particles().x, sim_.particles().y,
-                   f.shear_strain, f.displacement);
+      const bool three = std::fabs(targets[k] * 1000.0 - std::round(targets[k] * 1000.0)) < 1e-9;
+      std::snprintf(tag, sizeof tag, three ? "SB%.3f" : "SB%.4f", targets[k]);  // SB0.500, SB0.0125
+      const std::string when = " at S/B = " + std::to_string(S_over_B()).substr(0, 6);
+      for (ContourField field : scene_.output.contour_fields) {
+        const auto map = [&](const char* stem, const std::string& what, const char* label, const std::vector<double>& v) {
+          const std::string w = write_contour_figure(opt_.output_dir, stem + std::string("_") + tag,
+                                                     scene_.name + ": " + what + when, label, scene_.cell_size,
+                                                     sim_.particles().x, sim_.particles().y, v, field == ContourField::N);
+          if (!w.empty()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+        };
+        switch (field) {
+          case ContourField::shear_strain: map("shear_strain", "shear strain", "max shear strain (engineering)", f.shear_strain); break;
+          case ContourField::displacement: map("displacement", "displacement", "|u| [m]", f.displacement); break;
+          case ContourField::fabric_norm: map("fabric_norm", "fabric norm |F|", "|F|", f.fabric_norm); break;
+          case ContourField::N: map("N", "N = F:n / |F| (fabric against loading direction)", "N", f.N); break;
+          case ContourField::void_ratio: map("void_ratio", "void ratio", "e", f.void_ratio); break;
+        }
+      }
     }
   }
 
@@ -292,8 +307,28 @@ class Run {
                                             {"max_kinetic_ratio", max_ratio},
                                             {"kinetic_ratio_limit", scene_.quasi_static.kinetic_ratio_limit},
                                             {"quasi_static", max_ratio <= scene_.quasi_static.kinetic_ratio_limit},
-                                            {"max_penetration_m", max_penetration()}};
+                                            {"max_penetration_m", max_penetration()},
+                                            {"sides", sides_json()}};
     common::write_file_atomically(path("summary.json"), summary.dump(2) + "\n");
+  }
+
+  // The soil left and right of the footing at the peak and at the end (fields.hpp, SideMeasures).
+  nlohmann::ordered_json sides_json() const {
+    if (!scene_.footing) return nullptr;
+    const Particles& P = sim_.particles();
+    std::vector<double> gamma_now(P.n);
+    for (std::size_t i = 0; i < P.n; ++i) gamma_now[i] = max_shear_strain(&P.strain[3 * i]);
+    const auto side = [&](const SideMeasures& m) {
+      return nlohmann::ordered_json{{"sheared_area_left_m2", m.sheared_area_left},
+                                    {"sheared_area_right_m2", m.sheared_area_right},
+                                    {"heave_left_m", m.heave_left},
+                                    {"heave_right_m", m.heave_right}};
+    };
+    const double c = scene_.footing->centre_x;
+    const bool mirror = scene_.footing->symmetric_half;
+    return {{"sheared_above_gamma", sheared_area_gamma},
+            {"at_peak", side(side_measures(P, st_.peak.y, st_.peak.shear_strain, c, mirror))},
+            {"at_end", side(side_measures(P, P.y, gamma_now, c, mirror))}};
   }
 
   int thread_count_used() const { return thread_count(scene_.solver.threads); }

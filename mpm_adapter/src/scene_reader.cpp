@@ -184,8 +184,8 @@ std::vector<ParticleTrack> read_particle_histories(const json& j, const std::str
 }
 
 OutputSpec read_output(const json& j, const std::string& p, const std::string& dir) {
-  f::allow_keys(j, {"vtk_every_S_over_B", "vtk_every_time", "contours_at_S_over_B", "contours_at_peak", "lab_curve",
-                    "lab_label", "checkpoint_every_s", "every_step_csv", "particle_histories"},
+  f::allow_keys(j, {"vtk_every_S_over_B", "vtk_every_time", "contours_at_S_over_B", "contour_fields", "contours_at_peak",
+                    "lab_curve", "lab_label", "checkpoint_every_s", "every_step_csv", "particle_histories"},
                 p);
   OutputSpec o;
   if (j.contains("vtk_every_S_over_B"))
@@ -197,6 +197,22 @@ OutputSpec read_output(const json& j, const std::string& p, const std::string& d
     for (std::size_t i = 0; i < c.size(); ++i)
       o.contours_at_S_over_B.push_back(
           f::number(c[i], p + "/contours_at_S_over_B/" + std::to_string(i), {0.0, 10.0, true, false}));
+  }
+  if (j.contains("contour_fields")) {
+    const json& c = j["contour_fields"];
+    if (!c.is_array() || c.empty()) f::fail(p + "/contour_fields", "expected a non-empty array of field names");
+    o.contour_fields.clear();
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const std::string q = p + "/contour_fields/" + std::to_string(i);
+      o.contour_fields.push_back(f::choice<ContourField>(c[i], q,
+                                                         {{"shear_strain", ContourField::shear_strain},
+                                                          {"displacement", ContourField::displacement},
+                                                          {"fabric_norm", ContourField::fabric_norm},
+                                                          {"N", ContourField::N},
+                                                          {"void_ratio", ContourField::void_ratio}}));
+      for (std::size_t k = 0; k < i; ++k)
+        if (o.contour_fields[k] == o.contour_fields[i]) f::fail(q, "named twice");
+    }
   }
   if (j.contains("contours_at_peak")) o.contours_at_peak = f::boolean(j["contours_at_peak"], p + "/contours_at_peak");
   if (j.contains("lab_curve")) {

@@ -19,4 +19,15 @@ double max_shear_strain(const double* strain);
 
 ParticleFields particle_fields(const Simulation& sim);
 
+// How the soil left of the footing's centre line fared against the soil right of it (by where
+// each particle started): the area that has sheared more than `gamma_limit` (initial particle
+// areas, m^2 per metre) and the largest heave (upward displacement, m). On a symmetric half
+// domain the left side is the mirror image of the right.
+struct SideMeasures {
+  double sheared_area_left = 0, sheared_area_right = 0, heave_left = 0, heave_right = 0;
+};
+inline constexpr double sheared_area_gamma = 0.05;
+SideMeasures side_measures(const Particles& P, const std::vector<double>& y_now, const std::vector<double>& shear_strain,
+                           double centre_x, bool mirror);
+
 }  // namespace acst::mpm

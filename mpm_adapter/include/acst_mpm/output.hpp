@@ -25,6 +25,7 @@ std::string pvd_text(const std::string& stem, const std::vector<double>& times);
 std::string write_load_figure(const Scene& scene, const std::string& dir, const std::string& csv_file);
 std::string write_contour_figure(const std::string& dir, const std::string& stem, const std::string& title,
                                  const std::string& label, double cell, const std::vector<double>& x,
-                                 const std::vector<double>& y, const std::vector<double>& value);
+                                 const std::vector<double>& y, const std::vector<double>& value,
+                                 bool signed_unit = false);
 
 }  // namespace acst::mpm

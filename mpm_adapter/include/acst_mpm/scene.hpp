@@ -58,10 +58,14 @@ struct ParticleTrack {
   double x = 0, y = 0;
 };
 
+// Particle fields drawn as maps at contours_at_S_over_B (docs/mpm.md, "Output").
+enum class ContourField { shear_strain, displacement, fabric_norm, N, void_ratio };
+
 struct OutputSpec {
   double vtk_every_S_over_B = 0.05;         // also used for time-driven runs via vtk_every_time
   std::optional<double> vtk_every_time;
-  std::vector<double> contours_at_S_over_B;  // shear-strain and displacement figures
+  std::vector<double> contours_at_S_over_B;  // maps of contour_fields there
+  std::vector<ContourField> contour_fields{ContourField::shear_strain, ContourField::displacement};
   bool contours_at_peak = true;
   std::string lab_curve;                     // CSV with S_over_B and q_kPa columns, overlaid
   std::string lab_label;
