@@ -205,10 +205,19 @@ TEST(SweepDescription, BadDescriptionsNameTheirJsonPath) {
 
 TEST(SweepRun, GathersEveryCaseAndKeepsFinishedOnes) {
   const fs::path dir = acst::test::scratch_folder("sweep_run");
-  const fs::path file = write(dir / "sweep.json", description(two_beddings, R"("gather": {"load_at_S_over_B": [0.05, 0.5]})"));
+  const fs::path file = write(dir / "sweep.json", description(two_beddings, R"("gather": {"load_at_S_over_B": [0.03, 0.5]},
+      "findings": [{"finding": "Bedding 0 carries more", "checks": [{"expect": "greater", "cases": ["bedding_0", "bedding_90"], "column": "q_ult_kPa"}]},
+                   {"finding": "Bedding 90 carries more", "checks": [{"expect": "greater", "cases": ["bedding_90", "bedding_0"], "column": "q_ult_kPa"}]}])"));
   const std::string out = (dir / "out").string();
-  const Cli first = sweep({"--quiet", "--no-plot", "--threads", "1", "--output", out, file.string()});
+  const Cli first = sweep({"--quiet", "--no-plot", "--threads", "1", "--output", out, "--report", (dir / "report.md").string(), file.string()});
   ASSERT_EQ(first.rc, 0) << first.err;
+  // The report judges each finding on the table (the comparison below checks the physics).
+  for (const fs::path& report : {fs::path(out) / "report.md", dir / "report.md"}) {
+    const std::string text = acst::common::read_input_file(report.string());
+    EXPECT_NE(text.find("1. Bedding 0 carries more: **reproduced**"), std::string::npos) << text;
+    EXPECT_NE(text.find("2. Bedding 90 carries more: **not reproduced**"), std::string::npos) << text;
+    EXPECT_NE(text.find("acst_sweep --quiet --no-plot"), std::string::npos) << text;
+  }
   const json rows = read_json(fs::path(out) / "table.json")["cases"];
   ASSERT_EQ(rows.size(), 2u);
   for (const json& r : rows) {
@@ -220,12 +229,12 @@ TEST(SweepRun, GathersEveryCaseAndKeepsFinishedOnes) {
     EXPECT_NEAR(r["q_ult_kPa"].get<double>(), summary["q_ult_kPa"].get<double>(), 1e-6 * summary["q_ult_kPa"].get<double>());
     EXPECT_EQ(r["steps"], summary["steps"]);
     EXPECT_GT(r["q_ult_kPa"].get<double>(), 100.0);
-    // q at S/B 0.05 lies between the two records around it; 0.5 is past the run's end (0.1).
+    // q at S/B 0.03 lies between the two records around it; 0.5 is past the run's end (0.06).
     const std::vector<std::vector<double>> record = load_record(case_dir / "load_settlement.csv");
     for (std::size_t k = 1; k < record.size(); ++k) {
-      if (!(record[k - 1][0] <= 0.05 && record[k][0] >= 0.05)) continue;
-      EXPECT_GE(r["q_at_S_over_B_0.05_kPa"].get<double>(), std::min(record[k - 1][1], record[k][1]));
-      EXPECT_LE(r["q_at_S_over_B_0.05_kPa"].get<double>(), std::max(record[k - 1][1], record[k][1]));
+      if (!(record[k - 1][0] <= 0.03 && record[k][0] >= 0.03)) continue;
+      EXPECT_GE(r["q_at_S_over_B_0.03_kPa"].get<double>(), std::min(record[k - 1][1], record[k][1]));
+      EXPECT_LE(r["q_at_S_over_B_0.03_kPa"].get<double>(), std::max(record[k - 1][1], record[k][1]));
     }
     EXPECT_TRUE(r["q_at_S_over_B_0.5_kPa"].is_null());
     EXPECT_TRUE(fs::exists(case_dir / "sweep_case.json"));
@@ -236,7 +245,7 @@ TEST(SweepRun, GathersEveryCaseAndKeepsFinishedOnes) {
   EXPECT_DOUBLE_EQ(rows[1]["bedding_angle_deg"].get<double>(), 90.0);
   // The bedding planes across the load (0 deg) carry more than along it (90 deg) on this dense sand.
   EXPECT_GT(rows[0]["q_ult_kPa"].get<double>(), rows[1]["q_ult_kPa"].get<double>());
-  for (const char* f : {"table.csv", "table.md", "sweep.json"}) EXPECT_TRUE(fs::exists(fs::path(out) / f)) << f;
+  for (const char* f : {"table.csv", "table.md", "sweep.json", "report.md"}) EXPECT_TRUE(fs::exists(fs::path(out) / f)) << f;
 
   // Run again: both cases are kept as they are.
   const auto stamp = fs::last_write_time(fs::path(out) / "cases" / "bedding_0" / "summary.json");
@@ -357,7 +366,7 @@ TEST(SideMeasures, CountEachSideByWhereItsParticlesStarted) {
 // table's side measures and H say so (the reference study's asymmetry, on the small footing).
 TEST(SweepRun, AnInclinedLoadShearsMoreSoilOnTheSideItPushesTowards) {
   const fs::path dir = acst::test::scratch_folder("sweep_inclined");
-  const fs::path file = write(dir / "sweep.json", description(R"([{"name": "beta20", "set": {"/footing/inclination_deg": 20}}])"));
+  const fs::path file = write(dir / "sweep.json", description(R"([{"name": "beta20", "set": {"/footing/inclination_deg": 20, "/stop/S_over_B": 0.1}}])"));
   const std::string out = (dir / "out").string();
   ASSERT_EQ(sweep({"--quiet", "--no-plot", "--threads", "1", "--output", out, file.string()}).rc, 0);
   const json row = read_json(fs::path(out) / "table.json")["cases"][0];

@@ -175,7 +175,7 @@ void set_at_pointer(json& scene, const std::string& pointer, const json& value, 
 
 SweepSpec parse_sweep(const std::string& json_text, const std::string& file, const std::string& extra_set) {
   const json j = f::parse(json_text, "", "the sweep description");
-  f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather"}, "");
+  f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings"}, "");
   SweepSpec s;
   s.file = file;
   s.text = j.dump();
@@ -267,6 +267,11 @@ SweepSpec parse_sweep(const std::string& json_text, const std::string& file, con
       }
       s.cases.push_back(std::move(sc));
     }
+  }
+  if (j.contains("findings")) {
+    std::vector<std::string> case_names;
+    for (const SweepCase& c : s.cases) case_names.push_back(c.name);
+    s.findings = read_findings(j["findings"], "/findings", case_names);
   }
   return s;
 }

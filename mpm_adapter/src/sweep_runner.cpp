@@ -80,6 +80,12 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
   return plan;
 }
 
+// The table and the report as they stand.
+void gather(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const SweepRunOptions& opt) {
+  write_sweep_table(sweep, rows, opt.output_dir);
+  write_sweep_report(sweep, rows, opt.output_dir, opt.report, opt.command);
+}
+
 std::string finished_line(const SweepCase& c, const ordered_json& row) {
   char text[400];
   if (row.value("status", "") == "done" && row.contains("q_ult_kPa")) {
@@ -105,7 +111,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
       fs::create_directories(fs::path(opt.output_dir) / sweep_cases_folder);
       common::write_file_atomically((fs::path(opt.output_dir) / "sweep.json").string(),
                                     json::parse(sweep.text).dump(2) + "\n");
-      write_sweep_table(sweep, plan.rows, opt.output_dir);
+      gather(sweep, plan.rows, opt);
     } catch (const std::exception& e) {
       problem = e.what();
     }
@@ -142,7 +148,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
     plan.rows[i] = ordered_json::parse(row_text);
     ++ended;
     try {
-      write_sweep_table(sweep, plan.rows, opt.output_dir);
+      gather(sweep, plan.rows, opt);
     } catch (const std::exception& e) {
       warnings.push_back(e.what());
     }
@@ -154,6 +160,11 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
   });
   if (sweep.figures && opt.plot)
     for (const std::string& w : write_group_figures(sweep, plan.rows, opt.output_dir)) warnings.push_back(w);
+  try {
+    gather(sweep, plan.rows, opt);  // the report links the figures now there
+  } catch (const std::exception& e) {
+    warnings.push_back(e.what());
+  }
   for (const std::string& w : warnings) err << "acst_sweep: warning: " << w << "\n";
 
   std::size_t done = 0;

@@ -52,10 +52,28 @@ std::string markdown_cell(const ordered_json& v) {
   return escaped;
 }
 
+// The rows as a markdown table, without the file names.
+std::string markdown_table(const std::vector<ordered_json>& rows) {
+  std::vector<std::string> cols;
+  for (const std::string& c : columns_of(rows))
+    if (c != "load_file" && c != "particles") cols.push_back(c);
+  std::string md;
+  for (const std::string& c : cols) md += "| " + c + " ";
+  md += "|\n";
+  for (std::size_t k = 0; k < cols.size(); ++k) md += "|---";
+  md += "|\n";
+  for (const ordered_json& r : rows) {
+    for (const std::string& c : cols) md += "| " + (r.contains(c) ? markdown_cell(r[c]) : "") + " ";
+    md += "|\n";
+  }
+  return md;
+}
+
 }  // namespace
 
 bool is_sweep_output_name(const std::string& name) {
-  static const std::set<std::string> own{sweep_cases_folder, "figures", "table.csv", "table.md", "table.json", "sweep.json"};
+  static const std::set<std::string> own{sweep_cases_folder, "figures",    "table.csv", "table.md",
+                                         "table.json",       "sweep.json", "report.md"};
   return own.count(name) > 0 || common::is_temporary_name(name);
 }
 
@@ -65,21 +83,13 @@ void write_sweep_table(const SweepSpec& sweep, const std::vector<ordered_json>& 
                     "': one row per case (docs/sweeps.md); q in kPa, H in kN/m, M in kNm/m, wall time in s\n";
   for (std::size_t k = 0; k < cols.size(); ++k) csv += (k ? "," : "") + cols[k];
   csv += '\n';
-  std::string md = "# Sweep " + common::one_line(sweep.name) + "\n\n";
-  if (!sweep.description.empty()) md += common::one_line(sweep.description) + "\n\n";
-  std::vector<std::string> md_cols;
-  for (const std::string& c : cols)
-    if (c != "load_file" && c != "particles") md_cols.push_back(c);
-  for (const std::string& c : md_cols) md += "| " + c + " ";
-  md += "|\n";
-  for (std::size_t k = 0; k < md_cols.size(); ++k) md += "|---";
-  md += "|\n";
   for (const ordered_json& r : rows) {
     for (std::size_t k = 0; k < cols.size(); ++k) csv += (k ? "," : "") + (r.contains(cols[k]) ? csv_cell(r[cols[k]]) : "");
     csv += '\n';
-    for (const std::string& c : md_cols) md += "| " + (r.contains(c) ? markdown_cell(r[c]) : "") + " ";
-    md += "|\n";
   }
+  std::string md = "# Sweep " + common::one_line(sweep.name) + "\n\n";
+  if (!sweep.description.empty()) md += common::one_line(sweep.description) + "\n\n";
+  md += markdown_table(rows);
   const ordered_json table = {{"sweep", sweep.name}, {"description", sweep.description}, {"cases", rows}};
   common::write_file_atomically((fs::path(dir) / "table.csv").string(), csv);
   common::write_file_atomically((fs::path(dir) / "table.md").string(), md);
@@ -124,6 +134,51 @@ std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::
     if (!w.empty()) warnings.push_back("figure of group '" + group + "': " + w);
   }
   return warnings;
+}
+
+void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const std::string& dir,
+                        const std::string& extra_report, const std::string& command) {
+  std::size_t done = 0;
+  for (const ordered_json& r : rows) done += r.value("status", std::string()) == "done";
+  std::set<std::string> groups;
+  for (const SweepCase& c : sweep.cases) groups.insert(c.groups.begin(), c.groups.end());
+  // The same text in both places; only the folder the figure links start from differs.
+  const auto text = [&](const fs::path& report_dir) {
+    const fs::path figures = fs::relative(fs::absolute(fs::path(dir) / "figures"), fs::absolute(report_dir));
+    std::string md = "# " + common::one_line(sweep.name) + "\n\n";
+    if (!sweep.description.empty()) md += common::one_line(sweep.description) + "\n\n";
+    md += "Written by acst_sweep (`docs/sweeps.md`) from `" + common::one_line(sweep.file) + "` with\n\n```\n" +
+          common::one_line(command) + "\n```\n\n" + std::to_string(done) + " of " + std::to_string(rows.size()) +
+          " cases done. Verdicts are judged on the table below by the checks the description states; a check is open "
+          "while a case it reads has not run to its end.\n\n";
+    if (!sweep.findings.empty()) md += "## Findings\n\n";
+    for (std::size_t i = 0; i < sweep.findings.size(); ++i) {
+      const Finding& fd = sweep.findings[i];
+      std::vector<CheckResult> results;
+      for (const FindingCheck& c : fd.checks) results.push_back(judge(c, rows));
+      md += "### " + std::to_string(i + 1) + ". " + common::one_line(fd.claim) + ": **" + verdict(results) + "**\n\n";
+      md += "| check | values | result |\n|---|---|---|\n";
+      for (std::size_t k = 0; k < fd.checks.size(); ++k) {
+        const FindingCheck& c = fd.checks[k];
+        std::string what = c.what;
+        if (what.empty()) {
+          what = c.columns[0] + (c.columns.size() > 1 ? " > " + c.columns[1] : "") + ": " + c.expect;
+        }
+        md += "| " + markdown_cell(what) + " | " + markdown_cell(results[k].numbers) + " | " + results[k].status + " |\n";
+      }
+      md += "\n";
+      if (!fd.note.empty()) md += common::one_line(fd.note) + "\n\n";
+    }
+    md += "## Cases\n\n" + markdown_table(rows) + "\n## Figures\n\n";
+    for (const std::string& g : groups) {
+      if (!fs::exists(fs::path(dir) / "figures" / (g + ".png"))) continue;
+      md += "- " + g + ": ![" + g + "](" + (figures / (g + ".png")).generic_string() + ")\n";
+    }
+    return md;
+  };
+  common::write_file_atomically((fs::path(dir) / "report.md").string(), text(dir));
+  if (!extra_report.empty())
+    common::write_file_atomically(extra_report, text(fs::absolute(extra_report).parent_path()));
 }
 
 }  // namespace acst::mpm

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "acst_mpm/scene.hpp"
+#include "acst_mpm/sweep_findings.hpp"
 
 namespace acst::mpm {
 
@@ -24,6 +25,7 @@ struct SweepSpec {
   std::vector<SweepCase> cases;
   std::vector<double> load_at_S_over_B{0.5};  // S/B values at which the table gives q
   bool figures = true;                         // one overlay of the load curves per group
+  std::vector<Finding> findings;               // judged in report.md
 };
 
 // Reads a sweep description (docs/sweeps.md, "The description"). Every case's scene is built and

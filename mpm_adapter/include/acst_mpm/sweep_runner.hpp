@@ -43,6 +43,8 @@ struct SweepRunOptions {
   int threads = 0;            // per case; 0: the scene's solver/threads, else all cores
   bool plot = true, quiet = false;
   bool retry_failed = false;  // run failed cases again instead of reporting them as they are
+  std::string report;         // a copy of report.md here too ("" : none)
+  std::string command;        // the command line, for the report
 };
 
 // Exit status: 0 every case done; 1 a case failed (the others ran; the table says which);

@@ -18,6 +18,12 @@ void write_sweep_table(const SweepSpec& sweep, const std::vector<nlohmann::order
 std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::vector<nlohmann::ordered_json>& rows,
                                              const std::string& dir);
 
+// report.md in `dir` (and a copy at `extra_report` when not empty, its figure links made relative
+// to its own folder): the description, every finding with its checks' numbers and verdict, the
+// table and the group figures. `command`: the command line that made it.
+void write_sweep_report(const SweepSpec& sweep, const std::vector<nlohmann::ordered_json>& rows, const std::string& dir,
+                        const std::string& extra_report, const std::string& command);
+
 // The file names the tables and figures take in a sweep's folder.
 bool is_sweep_output_name(const std::string& name);
 

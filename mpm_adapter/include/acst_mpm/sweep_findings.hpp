@@ -1,0 +1,42 @@
+#pragma once
+// Findings a sweep tests (docs/sweeps.md, "Findings"): claims of a study written as checks on the
+// gathered table (a trend along cases, two cases or two columns compared, a ratio or a value
+// against an expected one), judged on the rows and written as a markdown report.
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace acst::mpm {
+
+struct FindingCheck {
+  std::string what;                  // shown in the report; default: made from the check
+  std::string expect;                // increasing, decreasing, similar, different, greater, ratio, near, report
+  std::vector<std::string> cases;    // case names, in the order the check reads them
+  std::vector<std::string> columns;  // one column, or two for "greater" within each case
+  double value = std::numeric_limits<double>::quiet_NaN();
+  double within = std::numeric_limits<double>::quiet_NaN();      // relative
+  double within_abs = std::numeric_limits<double>::quiet_NaN();  // absolute (near)
+};
+
+struct Finding {
+  std::string claim, note;
+  std::vector<FindingCheck> checks;
+};
+
+// Reads "findings" at `path`; every case named must be one of `case_names`. Throws InputError.
+std::vector<Finding> read_findings(const nlohmann::json& j, const std::string& path,
+                                   const std::vector<std::string>& case_names);
+
+// What a check says about the rows: "holds", "fails", "open" (a value is missing: the case has
+// not run, failed, or its record does not reach the column) or "reported" (no verdict asked);
+// `numbers`: the values it read, as the report shows them.
+struct CheckResult {
+  std::string status, numbers;
+};
+CheckResult judge(const FindingCheck& check, const std::vector<nlohmann::ordered_json>& rows);
+
+// "reproduced", "not reproduced", "partly reproduced" or "open", from its checks' results.
+std::string verdict(const std::vector<CheckResult>& results);
+
+}  // namespace acst::mpm
