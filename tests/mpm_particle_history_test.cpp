@@ -112,6 +112,22 @@ TEST(ParticleHistory, RunWritesTheGeostaticStartAndOneRowPerRecordRow) {
   EXPECT_EQ(t.at(0, "eps_11_pct"), 0.0);
   EXPECT_GT(t.at(t.rows.size() - 1, "eps_11_pct"), 0.0);
   EXPECT_GT(t.at(t.rows.size() - 1, "sigma_11_kPa"), 2.0 * sv);
+  // The study's columns agree with the tensors of the same row (within the file's 10 significant
+  // digits): p and q from the stress, e_v from the strain, |F| (the material's diagnostics) from
+  // the fabric's components; N is a cosine.
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto v = [&](const char* c) { return t.at(r, c); };
+    const double s11 = v("sigma_11_kPa"), s22 = v("sigma_22_kPa"), s33 = v("sigma_33_kPa");
+    const double J2 = ((s11 - s22) * (s11 - s22) + (s22 - s33) * (s22 - s33) + (s33 - s11) * (s33 - s11)) / 6.0 +
+                      std::pow(v("sigma_12_kPa"), 2) + std::pow(v("sigma_13_kPa"), 2) + std::pow(v("sigma_23_kPa"), 2);
+    EXPECT_NEAR(v("p_kPa"), (s11 + s22 + s33) / 3.0, 1e-9 * v("p_kPa"));
+    EXPECT_NEAR(v("q_kPa"), std::sqrt(3.0 * J2), 1e-9 * v("p_kPa"));
+    EXPECT_NEAR(v("eps_v_pct"), v("eps_11_pct") + v("eps_22_pct") + v("eps_33_pct"), 1e-8);  // 10 digits written
+    const double FF = std::pow(v("F11"), 2) + std::pow(v("F22"), 2) + std::pow(v("F33"), 2) +
+                      2.0 * (std::pow(v("F12"), 2) + std::pow(v("F13"), 2) + std::pow(v("F23"), 2));
+    EXPECT_NEAR(v("fabric_norm"), std::sqrt(FF), 1e-9);
+    EXPECT_LE(std::fabs(v("N")), 1.0 + 1e-12);
+  }
   fs::remove_all(dir);
 }
 

@@ -301,6 +301,15 @@ TEST(SweepRun, AForeignFolderOrBadCommandLineIsRefusedAndLeftAlone) {
   EXPECT_EQ(acst::test::everything_under(out), std::vector<std::string>{"notes.txt"});
   EXPECT_EQ(sweep({"--threads", "0", file.string()}).rc, 2);
   EXPECT_EQ(sweep({(dir / "missing.json").string()}).rc, 2);
+  // A case that cannot start (its followed particle outside the soil) stops the sweep before any
+  // case runs, naming the case and the scene's path.
+  const fs::path unstartable = write(dir / "unstartable.json", description(R"([{"name": "fine"},
+      {"name": "outside", "set": {"/output/particle_histories": [{"name": "P", "at": [30, 0.5]}]}}])"));
+  const fs::path fresh = dir / "fresh";
+  const Cli refused = sweep({"--output", fresh.string(), unstartable.string()});
+  EXPECT_EQ(refused.rc, 2);
+  EXPECT_NE(refused.err.find("case 'outside' (/cases/1): /output/particle_histories/0/at"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(fresh / "cases" / "fine"));
   const Cli list = sweep({"--list", file.string()});
   EXPECT_EQ(list.rc, 0);
   EXPECT_NE(list.out.find("bedding_90  group bedding  from /cases/0"), std::string::npos) << list.out;

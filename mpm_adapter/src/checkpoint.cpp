@@ -16,7 +16,7 @@ constexpr std::uintmax_t max_checkpoint_bytes = std::uintmax_t{16} << 30;
 
 // Layout (docs/mpm.md, "Checkpoints"): magic, scene text, material records, particle arrays, run
 // fields, then the FNV-1a checksum of everything before it.
-constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '4'};
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '5'};
 constexpr std::size_t checksum_bytes = sizeof(std::uint64_t);
 
 struct Writer {
@@ -126,7 +126,8 @@ bool all_finite(const std::vector<double>& v) {
 
 bool track_finite(const TrackRecord& t) {
   bool finite = std::isfinite(t.time) && std::isfinite(t.S_over_B) && std::isfinite(t.x) && std::isfinite(t.y) &&
-                std::isfinite(t.rotation_rad) && std::isfinite(t.void_ratio) && std::isfinite(t.H) && t.step >= 0;
+                std::isfinite(t.rotation_rad) && std::isfinite(t.void_ratio) && std::isfinite(t.H) &&
+                std::isfinite(t.fabric_norm) && std::isfinite(t.A) && t.step >= 0;
   for (const double* v : {t.strain, t.strain + 1, t.strain + 2}) finite = finite && std::isfinite(*v);
   for (int i = 0; i < 6; ++i) finite = finite && std::isfinite(t.stress[i]) && std::isfinite(t.fabric[i]);
   return finite;

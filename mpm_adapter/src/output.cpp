@@ -44,7 +44,8 @@ bool is_run_output_name(const std::string& name) {
   for (const char* stem : {"load_settlement", "load_settlement.partial", "load_settlement.failed"})
     for (const char* ext : {".csv", ".png", ".gp"})
       if (name == std::string(stem) + ext) return true;
-  for (const char* fixed : {"particles.pvd", "summary.json", "checkpoint.bin", "failure_reproducer.json"})
+  for (const char* fixed : {"particles.pvd", "summary.json", "checkpoint.bin", "failure_reproducer.json",
+                            "particle_histories.png", "particle_histories.gp"})
     if (name == fixed) return true;
   if (starts("particles_") && ends(".vtp") && middle(10, 4, "0123456789")) return true;
   if (starts("particle_") && ends(".csv") && common::is_plain_stem(name.substr(9, name.size() - 13))) return true;
@@ -88,7 +89,7 @@ std::string track_csv_text(const Scene& scene, int k, const std::vector<TrackRec
          "accumulated rotation (counter-clockwise)\n";
   out += "step,time_s,S_over_B,x_m,y_m,rotation_deg,eps_11_pct,eps_22_pct,eps_33_pct,gamma_12_pct,gamma_13_pct,"
          "gamma_23_pct,sigma_11_kPa,sigma_22_kPa,sigma_33_kPa,sigma_12_kPa,sigma_13_kPa,sigma_23_kPa,void_ratio,"
-         "F11,F22,F33,F12,F13,F23,H\n";
+         "F11,F22,F33,F12,F13,F23,H,p_kPa,q_kPa,eps_v_pct,fabric_norm,N\n";
   // (x, y, z) -> (3, 1, 2): test 11 = yy, 22 = zz, 33 = xx, 12 = yz, 13 = yx, 23 = zx.
   constexpr int from[6] = {1, 2, 0, 5, 3, 4};
   for (const TrackRecord& r : rows) {
@@ -101,6 +102,14 @@ std::string track_csv_text(const Scene& scene, int k, const std::vector<TrackRec
     out += ',', put(out, r.void_ratio);
     for (int i : from) out += ',', put(out, r.fabric[i]);
     out += ',', put(out, r.H);
+    // p and q from the stress (invariants: any frame), compression positive; N as in the maps.
+    const double* t = r.stress;
+    const double p = -(t[0] + t[1] + t[2]) / 3.0;
+    const double J2 = ((t[0] - t[1]) * (t[0] - t[1]) + (t[1] - t[2]) * (t[1] - t[2]) + (t[2] - t[0]) * (t[2] - t[0])) / 6.0 +
+                      t[3] * t[3] + t[4] * t[4] + t[5] * t[5];
+    for (double v : {p, std::sqrt(3.0 * J2), strain[0] + strain[1] + strain[2], r.fabric_norm,
+                     r.fabric_norm > 0.0 ? r.A / r.fabric_norm : 0.0})
+      out += ',', put(out, v);
     out += '\n';
   }
   return out;
@@ -174,6 +183,30 @@ std::string write_load_figure(const Scene& scene, const std::string& dir, const 
   gp << "\n";
   return acst::common::run_gnuplot(gp.str(), (fs::path(dir) / "load_settlement.gp").string(),
                                    (fs::path(dir) / "load_settlement.png").string());
+}
+
+std::string write_history_figure(const Scene& scene, const std::string& dir) {
+  std::ostringstream gp;
+  gp << "# gnuplot script written by acst_mpm for scene " << scene.name << "\n"
+     << "set terminal pngcairo size 1400,1000 font 'DejaVu Sans,11' noenhanced\n"
+     << "if (!exists('png')) png = 'particle_histories.png'\nset output png\n"
+     << "set datafile separator ','\nset datafile commentschars '#'\nset datafile columnheaders\n"
+     << "set multiplot layout 2,2 title " << common::gp_quoted("Particle histories: " + scene.name) << "\n"
+     << "set grid\nset xlabel 'S/B'\nset key top left\n";
+  const std::pair<const char*, const char*> panels[] = {
+      {"q_kPa", "q [kPa]"}, {"eps_v_pct", "e_v [%] (compression +)"}, {"fabric_norm", "|F|"}, {"N", "N = F:n / |F|"}};
+  for (const auto& [column, label] : panels) {
+    gp << "set ylabel " << common::gp_quoted(label) << "\nplot ";
+    for (std::size_t k = 0; k < scene.output.particle_histories.size(); ++k) {
+      const std::string& name = scene.output.particle_histories[k].name;
+      gp << (k ? ", " : "") << common::gp_quoted(fs::absolute(fs::path(dir) / ("particle_" + name + ".csv")).string())
+         << " using 'S_over_B':'" << column << "' with lines lw 2 title " << common::gp_quoted(name);
+    }
+    gp << "\n";
+  }
+  gp << "unset multiplot\n";
+  return acst::common::run_gnuplot(gp.str(), (fs::path(dir) / "particle_histories.gp").string(),
+                                   (fs::path(dir) / "particle_histories.png").string());
 }
 
 std::string write_contour_figure(const std::string& dir, const std::string& stem, const std::string& title,

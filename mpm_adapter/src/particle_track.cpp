@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "acst.h"
 #include "acst_mpm/material_adapter.hpp"
 #include "acst_mpm/simulation.hpp"
 
@@ -57,6 +58,10 @@ TrackRecord track_record(const Simulation& sim, int k, double S_over_B) {
     out[4] = c * tensor[4] - s * tensor[5];
     out[5] = s * tensor[4] + c * tensor[5];
   }
+  double d[ACST_NDIAGNOSTICS];
+  m.diagnostics(d, sig, q);
+  r.A = d[6];
+  r.fabric_norm = d[7];
   r.void_ratio = q[m.state_index("void_ratio")];
   r.H = q[m.state_index("H")];
   return r;

@@ -284,6 +284,10 @@ class Run {
     if (opt_.plot && scene_.footing) {
       const std::string w = write_load_figure(scene_, opt_.output_dir, "load_settlement.csv");
       if (!w.empty()) sum.warnings.push_back(w);
+      if (!scene_.output.particle_histories.empty()) {
+        const std::string h = write_history_figure(scene_, opt_.output_dir);
+        if (!h.empty()) sum.warnings.push_back(h);
+      }
       if (scene_.output.contours_at_peak && !st_.peak.x.empty())
         contour_pair("peak", "Q_ult (S/B = " + std::to_string(st_.peak.S_over_B).substr(0, 5) + ")", st_.peak.x,
                      st_.peak.y, st_.peak.shear_strain, st_.peak.displacement);

@@ -23,6 +23,8 @@ std::string pvd_text(const std::string& stem, const std::vector<double>& times);
 
 // Figures: return "" or a warning (gnuplot missing or failed); they never throw.
 std::string write_load_figure(const Scene& scene, const std::string& dir, const std::string& csv_file);
+// particle_histories.png: q, e_v, |F| and N of every followed particle against S/B.
+std::string write_history_figure(const Scene& scene, const std::string& dir);
 std::string write_contour_figure(const std::string& dir, const std::string& stem, const std::string& title,
                                  const std::string& label, double cell, const std::vector<double>& x,
                                  const std::vector<double>& y, const std::vector<double>& value,

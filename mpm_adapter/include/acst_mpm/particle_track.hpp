@@ -22,6 +22,7 @@ struct TrackRecord {
   double stress[6] = {0, 0, 0, 0, 0, 0};
   double fabric[6] = {0, 0, 0, 0, 0, 0};
   double void_ratio = 0, H = 0;
+  double fabric_norm = 0, A = 0;  // |F| and A = F:n (the material's diagnostics); N = A/|F|
 };
 
 // Per tracked particle in Particles::track_frame: cos and sin of its accumulated rotation, then
