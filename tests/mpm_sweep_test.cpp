@@ -196,6 +196,7 @@ TEST(SweepDescription, BadDescriptionsNameTheirJsonPath) {
       {R"({"name": "t", "cases": [{"name": "a"}]})", "/cases/0: 'base' is required"},
       {R"({"name": "t", "base": "/nonexistent/scene.json", "cases": [{"name": "a"}]})", "/base: cannot read the base scene"},
       {description(R"([{"name": "a"}])", R"("gather": {"load_at_S_over_B": [-1]})"), "/gather/load_at_S_over_B/0"},
+      {description(R"([{"name": "a"}])", R"("gather": {"case_figures": ["../x.png"]})"), "/gather/case_figures/0: '../x.png' is not a plain file stem"},
   };
   for (const Bad& b : bad) {
     const std::string message = parse_error(b.text);
@@ -375,9 +376,16 @@ TEST(SideMeasures, CountEachSideByWhereItsParticlesStarted) {
 // table's side measures and H say so (the reference study's asymmetry, on the small footing).
 TEST(SweepRun, AnInclinedLoadShearsMoreSoilOnTheSideItPushesTowards) {
   const fs::path dir = acst::test::scratch_folder("sweep_inclined");
-  const fs::path file = write(dir / "sweep.json", description(R"([{"name": "beta20", "set": {"/footing/inclination_deg": 20, "/stop/S_over_B": 0.1}}])"));
+  const fs::path file = write(dir / "sweep.json", description(R"([{"name": "beta20", "set": {"/footing/inclination_deg": 20, "/stop/S_over_B": 0.1}}])",
+                                                              R"("gather": {"case_figures": ["load_settlement.png"]})"));
   const std::string out = (dir / "out").string();
-  ASSERT_EQ(sweep({"--quiet", "--no-plot", "--threads", "1", "--output", out, file.string()}).rc, 0);
+  ASSERT_EQ(sweep({"--quiet", "--threads", "1", "--output", out, file.string()}).rc, 0);
+  // With figures: the group's overlay and the case's own figure the description asks for, linked.
+  EXPECT_TRUE(fs::exists(fs::path(out) / "figures" / "all.png"));
+  EXPECT_TRUE(fs::exists(fs::path(out) / "figures" / "cases" / "beta20_load_settlement.png"));
+  EXPECT_NE(acst::common::read_input_file((fs::path(out) / "report.md").string())
+                .find("[load_settlement.png](figures/cases/beta20_load_settlement.png)"),
+            std::string::npos);
   const json row = read_json(fs::path(out) / "table.json")["cases"][0];
   EXPECT_GT(row["sheared_area_right_at_end_m2"].get<double>(), 1.5 * row["sheared_area_left_at_end_m2"].get<double>());
   EXPECT_GT(row["heave_right_at_end_m"].get<double>(), row["heave_left_at_end_m"].get<double>());

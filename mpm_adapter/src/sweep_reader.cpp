@@ -184,7 +184,15 @@ SweepSpec parse_sweep(const std::string& json_text, const std::string& file, con
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
   if (j.contains("gather")) {
     const json& g = j["gather"];
-    f::allow_keys(g, {"load_at_S_over_B", "figures"}, "/gather");
+    f::allow_keys(g, {"load_at_S_over_B", "figures", "case_figures"}, "/gather");
+    if (g.contains("case_figures")) {
+      const json& c = g["case_figures"];
+      if (!c.is_array()) f::fail("/gather/case_figures", "expected an array of file names of a case's folder");
+      for (std::size_t k = 0; k < c.size(); ++k) {
+        const std::string q = "/gather/case_figures/" + std::to_string(k);
+        s.case_figures.push_back(common::require_plain_stem(f::string(c[k], q), q));
+      }
+    }
     if (g.contains("load_at_S_over_B")) {
       if (!g["load_at_S_over_B"].is_array()) f::fail("/gather/load_at_S_over_B", "expected an array of S/B values");
       s.load_at_S_over_B.clear();

@@ -133,6 +133,18 @@ std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::
     const std::string w = common::run_gnuplot(gp.str(), (figures / (group + ".gp")).string(), (figures / (group + ".png")).string());
     if (!w.empty()) warnings.push_back("figure of group '" + group + "': " + w);
   }
+  // The figures of each case the description asks for, beside the group figures.
+  for (const SweepCase& c : sweep.cases)
+    for (const std::string& name : sweep.case_figures) {
+      const fs::path from = fs::path(case_folder(dir, c.name)) / name;
+      if (!fs::exists(from)) continue;
+      fs::create_directories(figures / "cases");
+      std::error_code ec;
+      const fs::path to = figures / "cases" / (c.name + "_" + name), temporary = common::temporary_name(to.string());
+      fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
+      if (!ec) fs::rename(temporary, to, ec);
+      if (ec) warnings.push_back("cannot copy " + from.string() + ": " + ec.message());
+    }
   return warnings;
 }
 
@@ -173,6 +185,23 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
     for (const std::string& g : groups) {
       if (!fs::exists(fs::path(dir) / "figures" / (g + ".png"))) continue;
       md += "- " + g + ": ![" + g + "](" + (figures / (g + ".png")).generic_string() + ")\n";
+    }
+    if (!sweep.case_figures.empty()) {
+      md += "\n### Of each case\n\n| case |";
+      for (const std::string& name : sweep.case_figures) md += " " + markdown_cell(name) + " |";
+      md += "\n|---|";
+      for (std::size_t k = 0; k < sweep.case_figures.size(); ++k) md += "---|";
+      md += "\n";
+      for (const SweepCase& c : sweep.cases) {
+        md += "| " + c.name + " |";
+        for (const std::string& name : sweep.case_figures) {
+          const std::string file = c.name + "_" + name;
+          md += fs::exists(fs::path(dir) / "figures" / "cases" / file)
+                    ? " [" + name + "](" + (figures / "cases" / file).generic_string() + ") |"
+                    : " |";
+        }
+        md += "\n";
+      }
     }
     return md;
   };

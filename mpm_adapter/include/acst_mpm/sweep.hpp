@@ -25,6 +25,7 @@ struct SweepSpec {
   std::vector<SweepCase> cases;
   std::vector<double> load_at_S_over_B{0.5};  // S/B values at which the table gives q
   bool figures = true;                         // one overlay of the load curves per group
+  std::vector<std::string> case_figures;       // files of each case copied to figures/cases/ for the report
   std::vector<Finding> findings;               // judged in report.md
 };
 
