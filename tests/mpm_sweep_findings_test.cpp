@@ -11,14 +11,16 @@ using nlohmann::ordered_json;
 
 namespace {
 
-const std::vector<std::string> names{"a", "b", "c", "d"};
+const std::vector<std::string> names{"a", "b", "c", "d", "e"};
 
-// Four cases with q 300, 200, 100 (d failed); left/right sheared areas; a residual per case.
+// Cases with q 300, 200, 100; d failed before its peak, e after it; left/right sheared areas; a
+// residual per case.
 std::vector<ordered_json> rows() {
   return {{{"case", "a"}, {"status", "done"}, {"q", 300.0}, {"left", 2.0}, {"right", 1.0}, {"r", 100.0}},
           {{"case", "b"}, {"status", "done"}, {"q", 200.0}, {"left", 1.0}, {"right", 3.0}, {"r", 104.0}},
           {{"case", "c"}, {"status", "done"}, {"q", 100.0}, {"left", 5.0}, {"right", 1.0}, {"r", 96.0}},
-          {{"case", "d"}, {"status", "failed"}, {"q", 50.0}}};
+          {{"case", "d"}, {"status", "failed"}, {"q", 50.0}},
+          {{"case", "e"}, {"status", "failed"}, {"q", 40.0}, {"peak_reached", true}, {"final_S_over_B", 0.4}}};
 }
 
 FindingCheck check(const std::string& text) {
@@ -54,8 +56,13 @@ TEST(SweepFindings, EachKindOfCheckIsJudgedOnTheRows) {
   EXPECT_EQ(status(R"({"expect": "near", "value": 310, "within": 0.04, "cases": ["a"], "column": "q"})"), "holds");
   EXPECT_EQ(status(R"({"expect": "near", "value": 310, "within_abs": 5, "cases": ["a"], "column": "q"})"), "fails");
   EXPECT_EQ(status(R"({"expect": "report", "cases": ["a", "b"], "column": "q"})"), "reported");
-  // A failed case, or a column a row does not have, leaves the check open.
+  // A case that failed before its peak, or a column a row does not have, leaves the check open;
+  // one that failed after its peak counts, and the report says where it failed.
   EXPECT_EQ(status(R"({"expect": "decreasing", "cases": ["a", "d"], "column": "q"})"), "open");
+  EXPECT_EQ(status(R"({"expect": "decreasing", "cases": ["a", "e"], "column": "q"})"), "holds");
+  EXPECT_NE(judge(check(R"({"expect": "report", "cases": ["e"], "column": "q"})"), rows()).numbers.find("e 40 (failed at S/B 0.4, after its peak)"),
+            std::string::npos);
+  EXPECT_EQ(status(R"({"expect": "report", "cases": ["e"], "column": "r"})"), "open");
   EXPECT_EQ(status(R"({"expect": "greater", "cases": ["a", "b"], "column": "nothing"})"), "open");
   const CheckResult r = judge(check(R"({"expect": "ratio", "value": 1.5, "within": 0.01, "cases": ["a", "b"], "column": "q"})"), rows());
   EXPECT_NE(r.numbers.find("a 300, b 200; ratio 1.5"), std::string::npos) << r.numbers;

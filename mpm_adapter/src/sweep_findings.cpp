@@ -66,14 +66,30 @@ FindingCheck read_check(const json& j, const std::string& p, const std::vector<s
   return c;
 }
 
-// The value of `column` in the row of case `name` when it ran to the end: NaN otherwise.
+const ordered_json* row_of(const std::vector<ordered_json>& rows, const std::string& name) {
+  for (const ordered_json& r : rows)
+    if (r.value("case", std::string()) == name) return &r;
+  return nullptr;
+}
+
+// The value of `column` in the row of case `name`: from a run that ended, or from one that failed
+// after its peak (what its record holds up to the failure stands; the columns past the failure
+// are empty); NaN otherwise.
 double value_of(const std::vector<ordered_json>& rows, const std::string& name, const std::string& column) {
-  for (const ordered_json& r : rows) {
-    if (r.value("case", std::string()) != name) continue;
-    if (r.value("status", std::string()) != "done" || !r.contains(column) || !r[column].is_number()) break;
-    return r[column].get<double>();
-  }
+  const ordered_json* r = row_of(rows, name);
+  if (!r || !r->contains(column) || !(*r)[column].is_number()) return std::numeric_limits<double>::quiet_NaN();
+  const std::string status = r->value("status", std::string());
+  if (status == "done" || (status == "failed" && r->value("peak_reached", false))) return (*r)[column].get<double>();
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+// "V85.6 1729", with the settlement where a case failed after its peak.
+std::string shown_value(const std::vector<ordered_json>& rows, const std::string& name, double v) {
+  const ordered_json* r = row_of(rows, name);
+  std::string text = name + " " + number_text(v);
+  if (r && r->value("status", std::string()) == "failed" && !std::isnan(v))
+    text += " (failed at S/B " + number_text(r->value("final_S_over_B", 0.0)) + ", after its peak)";
+  return text;
 }
 
 }  // namespace
@@ -106,7 +122,7 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows) 
       const double a = value_of(rows, name, c.columns[0]), b = value_of(rows, name, c.columns[1]);
       missing = missing || std::isnan(a) || std::isnan(b);
       all = all && a > b;
-      r.numbers += (r.numbers.empty() ? "" : "; ") + name + ": " + number_text(a) + " vs " + number_text(b);
+      r.numbers += (r.numbers.empty() ? "" : "; ") + shown_value(rows, name, a) + " vs " + number_text(b);
     }
     r.status = missing ? "open" : all ? "holds" : "fails";
     return r;
@@ -116,7 +132,7 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows) 
     v.push_back(value_of(rows, name, c.columns[0]));
     missing = missing || std::isnan(v.back());
   }
-  for (std::size_t k = 0; k < v.size(); ++k) r.numbers += (k ? ", " : "") + c.cases[k] + " " + number_text(v[k]);
+  for (std::size_t k = 0; k < v.size(); ++k) r.numbers += (k ? ", " : "") + shown_value(rows, c.cases[k], v[k]);
   bool holds = true;
   if (c.expect == "increasing" || c.expect == "decreasing") {
     for (std::size_t k = 1; k < v.size(); ++k) holds = holds && (c.expect == "increasing" ? v[k] > v[k - 1] : v[k] < v[k - 1]);

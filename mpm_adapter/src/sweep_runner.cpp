@@ -72,8 +72,12 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
                                "' holds a run of another scene or material" +
                                first_difference(record.value("fingerprint", json()), fingerprint) +
                                "; remove that folder to run the case again");
-    plan.rows.push_back(record["row"]);
-    if (opt.retry_failed && record["row"].value("status", "") != "done") {
+    // The row is read again from the case's folder: a newer acst_sweep gathers every case alike.
+    const ordered_json& kept = record["row"];
+    plan.rows.push_back(case_row(c, case_folder(opt.output_dir, c.name), kept.value("status", std::string()),
+                                 kept.value("message", std::string()), sweep.load_at_S_over_B));
+    plan.rows.back()["resumed"] = kept.value("resumed", false);
+    if (opt.retry_failed && kept.value("status", "") != "done") {
       plan.pending.push_back(i);
     } else {
       ++plan.skipped;
