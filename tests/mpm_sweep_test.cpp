@@ -19,6 +19,7 @@
 #include "acst_common/input_error.hpp"
 #include "acst_mpm/fields.hpp"
 #include "acst_mpm/sweep.hpp"
+#include "acst_mpm/sweep_case.hpp"
 #include "acst_mpm/sweep_runner.hpp"
 #include "cli_capture.hpp"
 #include "scratch.hpp"
@@ -390,4 +391,29 @@ TEST(SweepRun, AnInclinedLoadShearsMoreSoilOnTheSideItPushesTowards) {
   EXPECT_GT(row["sheared_area_right_at_end_m2"].get<double>(), 1.5 * row["sheared_area_left_at_end_m2"].get<double>());
   EXPECT_GT(row["heave_right_at_end_m"].get<double>(), row["heave_left_at_end_m"].get<double>());
   EXPECT_GT(row["H_at_peak_kN_per_m"].get<double>(), 0.0);
+}
+
+// A failed run's record ends in the failure's own spikes (an ejected particle's contact force):
+// the row leaves out its last 0.02 of S/B, so the peak it reports is the one before, and that
+// peak stands when the load had fallen 2 % below it before the failure.
+TEST(SweepRow, AFailedRunsLastMomentsDoNotMakeItsPeak) {
+  const SweepSpec s = parse_sweep(description(R"([{"name": "a"}])"), "");
+  const fs::path dir = acst::test::scratch_folder("sweep_row");
+  std::string csv = "# a failed record\nstep,S_over_B,V_kN_per_m,H_kN_per_m,M_kNm_per_m,q_kPa\n";
+  // q rises to 1000 kPa at S/B 0.1, falls to 500 at 0.3, then spikes to 5000 at 0.305.
+  for (int k = 0; k <= 61; ++k) {
+    const double sb = 0.005 * k, q = k == 61 ? 5000.0 : sb <= 0.1 ? 10000.0 * sb : 1000.0 - 2500.0 * (sb - 0.1);
+    csv += std::to_string(k) + "," + std::to_string(sb) + "," + std::to_string(0.3 * q) + ",0,0," + std::to_string(q) + "\n";
+  }
+  write(dir / "load_settlement.failed.csv", csv);
+  const json row = case_row(s.cases[0], dir.string(), "failed", "it failed", {0.2, 0.3});
+  EXPECT_NEAR(row["q_ult_kPa"].get<double>(), 1000.0, 1e-6);
+  EXPECT_NEAR(row["S_ult_over_B"].get<double>(), 0.1, 1e-9);
+  EXPECT_TRUE(row["peak_reached"].get<bool>());
+  EXPECT_NEAR(row["q_at_S_over_B_0.2_kPa"].get<double>(), 750.0, 1e-6);
+  EXPECT_TRUE(row["q_at_S_over_B_0.3_kPa"].is_null());  // within the failure's approach
+  EXPECT_NEAR(row["final_S_over_B"].get<double>(), 0.305, 1e-9);
+  // The same record from a run that ended: every row counts.
+  fs::rename(dir / "load_settlement.failed.csv", dir / "load_settlement.csv");
+  EXPECT_NEAR(case_row(s.cases[0], dir.string(), "done", "", {})["q_ult_kPa"].get<double>(), 5000.0, 1e-6);
 }

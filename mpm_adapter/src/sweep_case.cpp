@@ -121,7 +121,15 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
   const std::string record = (fs::path(dir) / "load_settlement.csv").string();
   const std::string failed = (fs::path(dir) / "load_settlement.failed.csv").string();
   const std::string load_file = fs::exists(record) ? record : failed;
-  const LoadCurve curve = read_load_record(load_file);
+  LoadCurve curve = read_load_record(load_file);
+  const double end_S_over_B = curve.S_over_B.empty() ? 0.0 : curve.S_over_B.back();
+  // A failed run's last moments (an ejected particle, a material failure) throw the contact load
+  // about by several times: the rows within failure_approach of its end do not count.
+  if (status == "failed") {
+    std::size_t keep = 0;
+    while (keep < curve.S_over_B.size() && curve.S_over_B[keep] <= end_S_over_B - failure_approach_S_over_B) ++keep;
+    for (auto* v : {&curve.S_over_B, &curve.V, &curve.H, &curve.M, &curve.q}) v->resize(keep);
+  }
   const auto peak = std::max_element(curve.V.begin(), curve.V.end());
   if (peak != curve.V.end()) {
     const std::size_t k = static_cast<std::size_t>(peak - curve.V.begin());
@@ -130,7 +138,7 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
     row["H_at_peak_kN_per_m"] = curve.H[k];
     row["M_at_peak_kNm_per_m"] = curve.M[k];
     for (double x : load_at_S_over_B) row[load_at_column(x)] = q_at(curve, x);
-    row["final_S_over_B"] = curve.S_over_B.back();
+    row["final_S_over_B"] = end_S_over_B;
     // acst_mpm's rule (runner.cpp): the load has fallen 2 % below its largest value. A run that
     // failed after that has a peak that stands (docs/sweeps.md, "Findings").
     row["peak_reached"] = curve.V.back() < 0.98 * *peak;
@@ -179,12 +187,16 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
     status = "failed";
     message = e.what();
   }
+  // The run's message names files by where they were written; they are read where they end up.
+  const std::string published = case_folder(options.sweep_dir, c.name);
+  for (std::size_t at = message.find(partial); at != std::string::npos; at = message.find(partial, at + published.size()))
+    message.replace(at, partial.size(), published);
   ordered_json row = case_row(c, partial, status, message, load_at_S_over_B);
   row["resumed"] = !run.resume_from.empty();
   fs::remove(checkpoint);  // a finished case is never resumed; its checkpoint is the largest file
   const ordered_json record = {{"fingerprint", fingerprint}, {"row", row}};
   common::write_file_atomically((fs::path(partial) / sweep_case_record).string(), record.dump(2) + "\n");
-  common::publish_folder(partial, case_folder(options.sweep_dir, c.name));
+  common::publish_folder(partial, published);
   fs::remove(fingerprint_path);
   return row;
 }

@@ -47,7 +47,20 @@ std::string first_difference(const json& then, const json& now) {
   return patch.empty() ? "" : " (first difference at " + patch[0].value("path", std::string("?")) + ")";
 }
 
-void check_buildable(const SweepSpec& sweep, const std::vector<std::size_t>& pending);
+// What the reader cannot see in a scene alone (a followed particle outside the soil, a material
+// that refuses its start) shows when its simulation is built: each case to run is built once
+// here, so that such a case stops the sweep before anything runs, not hours into it.
+void check_buildable(const SweepSpec& sweep, const std::vector<std::size_t>& pending) {
+  std::string problems;
+  for (std::size_t i : pending) {
+    try {
+      build_simulation(sweep.cases[i].scene);
+    } catch (const std::exception& e) {
+      problems += "\n  case '" + sweep.cases[i].name + "' (" + sweep.cases[i].origin + "): " + e.what();
+    }
+  }
+  if (!problems.empty()) throw common::InputError("cases that cannot start:" + problems);
+}
 
 struct Plan {
   std::vector<ordered_json> rows;
@@ -85,21 +98,6 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
   }
   check_buildable(sweep, plan.pending);
   return plan;
-}
-
-// What the reader cannot see in a scene alone (a followed particle outside the soil, a material
-// that refuses its start) shows when its simulation is built: each case to run is built once
-// here, so that such a case stops the sweep before anything runs, not hours into it.
-void check_buildable(const SweepSpec& sweep, const std::vector<std::size_t>& pending) {
-  std::string problems;
-  for (std::size_t i : pending) {
-    try {
-      build_simulation(sweep.cases[i].scene);
-    } catch (const std::exception& e) {
-      problems += "\n  case '" + sweep.cases[i].name + "' (" + sweep.cases[i].origin + "): " + e.what();
-    }
-  }
-  if (!problems.empty()) throw common::InputError("cases that cannot start:" + problems);
 }
 
 // The table and the report as they stand.

@@ -36,6 +36,9 @@ nlohmann::ordered_json run_case(const SweepCase& c, const CaseRunOptions& option
 // Throws std::runtime_error naming the file when it exists but cannot be read.
 nlohmann::json read_case_record(const std::string& sweep_dir, const std::string& name);
 
+// Of a run that failed, the last part of its record (in S/B) that the row leaves out.
+inline constexpr double failure_approach_S_over_B = 0.02;
+
 // The row of a case from its run's files in `dir`: the load record (load_settlement.csv, or the
 // record up to a failure) and summary.json when the run finished.
 nlohmann::ordered_json case_row(const SweepCase& c, const std::string& dir, const std::string& status,
