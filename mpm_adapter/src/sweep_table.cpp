@@ -161,8 +161,9 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
     if (!sweep.description.empty()) md += common::one_line(sweep.description) + "\n\n";
     md += "Written by acst_sweep (`docs/sweeps.md`) from `" + common::one_line(sweep.file) + "` with\n\n```\n" +
           common::one_line(command) + "\n```\n\n" + std::to_string(done) + " of " + std::to_string(rows.size()) +
-          " cases done. Verdicts are judged on the table below by the checks the description states; a check is open "
-          "while a case it reads has not run to its end.\n\n";
+          " cases done. Verdicts are judged on the table below by the checks the description states. A check reads the "
+          "cases that ran to their end and those that failed after their peak (the record up to the failure); it is "
+          "open while a case it reads has not (docs/sweeps.md, \"Findings\").\n\n";
     if (!sweep.findings.empty()) md += "## Findings\n\n";
     for (std::size_t i = 0; i < sweep.findings.size(); ++i) {
       const Finding& fd = sweep.findings[i];
