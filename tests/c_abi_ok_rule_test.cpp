@@ -186,6 +186,18 @@ TEST(AbiOkRule, ASubstepHintBelowTheMinimumStillAdvances) {
   }
 }
 
+// The fuzz target's finding: a NaN hint on an update that ends at the pressure floor (no substep
+// rewrites the hint) came back OK and NaN; now it counts as no hint and comes back finite. Any
+// other state variable that is not a number is refused before it is read (the reset count would
+// be converted to an integer).
+TEST(AbiOkRule, OnlyTheHintMayBeNotANumberOnEntry) {
+  const AbiModel m(guide);
+  Point p = sand_point(m.get(), 100.0, 0.7);
+  p.statev[hint_slot + 1] = not_a_number;
+  const double shear[6] = {-2e-3, 1e-3, 1e-3, 0, 0, 0};
+  EXPECT_EQ(checked_update(m.get(), p, shear, true, "reset count NaN").code, ACST_NONPHYSICAL_STATE);
+}
+
 // umat_ took an error tolerance the JSON input refuses (STOL 5): the same range everywhere now.
 TEST(AbiOkRule, UmatRefusesAToleranceTheJsonRefuses) {
   const nlohmann::json j = nlohmann::json::parse(guide);

@@ -60,7 +60,10 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
   }
   const AcstRates model(parameters_);
   AcstRates::Vector y = pack(state);
-  double H = state.H, hint = state.substep_hint;
+  // A hint that is no step size (NaN, zero, negative: a host's made-up state) means "none": the
+  // update may end without a substep that rewrites it (a reset to the pressure floor), and OK
+  // promises a finite state.
+  double H = state.H, hint = std::isfinite(state.substep_hint) && state.substep_hint > 0.0 ? state.substep_hint : 1.0;
   rep = integration::ExplicitSubstepping<AcstRates>(model, options_).integrate(y, H, hint, deps);
   if (rep.status != Status::ok) return rep;
   State next = state;

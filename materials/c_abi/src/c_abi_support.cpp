@@ -52,6 +52,15 @@ acst_status status_from_report(const integration::Report& r) {
 
 acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
                          integration::Report& rep) {
+  // The state variables before any is converted (the reset count to an integer, where a NaN would
+  // be undefined behaviour); the substep hint alone may be anything (no number: no hint).
+  bool finite = true;
+  for (int i = 0; i < state_size; ++i) finite = finite && (i == slot_substep_hint || std::isfinite(statev[i]));
+  if (!finite) {
+    rep = integration::Report{};
+    rep.status = integration::Status::nonphysical_state;
+    return status_from_report(rep);
+  }
   State s;
   s.stress = stress_to_model(stress);
   fill_state(s, statev);

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "acst/integration/embedded_runge_kutta.hpp"
 #include "acst/integration/options.hpp"
@@ -79,7 +80,9 @@ class ExplicitSubstepping {
     Vector k2;
     model_.elastic_rate(y + h * k1, deps, k2, c);
     const Vector y_new = y + (0.5 * h) * (k1 + k2);
-    return {y_new, std::max(model_.relative_error(y_new, (0.5 * h) * (k2 - k1)), 1e-16)};
+    const double error = model_.relative_error(y_new, (0.5 * h) * (k2 - k1));
+    // NaN would pass every "error > STOL" test: no estimate counts as too large an error.
+    return {y_new, std::isfinite(error) ? std::max(error, 1e-16) : std::numeric_limits<double>::infinity()};
   }
 
   ElasticStep heun_step(const Vector& y, const Sym& deps, double h, Counters& c) const {
@@ -230,7 +233,15 @@ class ExplicitSubstepping {
         last_rejected = true;
         continue;
       }
-      const double R = std::max(model_.relative_error(y_new, err), 1e-16);
+      const double measured = model_.relative_error(y_new, err);
+      if (!std::isfinite(measured)) {  // no error estimate (a stage's rate overflowed): shrink hard
+        last_failure = Reason::non_finite;
+        ++c.substeps_rejected;
+        dT_next = 0.1 * h;
+        last_rejected = true;
+        continue;
+      }
+      const double R = std::max(measured, 1e-16);
       const double factor = 0.9 * std::pow(opt_.stol / R, exponent);
       if (R > opt_.stol) {
         ++c.substeps_rejected;
