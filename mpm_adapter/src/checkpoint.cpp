@@ -16,7 +16,7 @@ constexpr std::uintmax_t max_checkpoint_bytes = std::uintmax_t{16} << 30;
 
 // Layout (docs/mpm.md, "Checkpoints"): magic, scene text, material records, particle arrays, run
 // fields, then the FNV-1a checksum of everything before it.
-constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '5'};
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '6'};
 constexpr std::size_t checksum_bytes = sizeof(std::uint64_t);
 
 struct Writer {
@@ -90,6 +90,7 @@ void particle_arrays(P& particles, F&& f) {
                   &p.track_frame})
     f(*v);
   f(p.material);
+  f(p.stress_free);
   f(p.tracked);
 }
 

@@ -69,14 +69,17 @@ int Material::state_index(const std::string& name) const {
   return -1;
 }
 
-acst_status Material::update(double* stress, double* statev, const double* L, double dt, std::string* reproducer) const {
+acst_status Material::update(double* stress, double* statev, const double* L, double dt, bool& stress_free,
+                             std::string* reproducer) const {
+  stress_free = false;
   const PlaneRotation r = hughes_winget_rotation(L, dt);
   const double Q[9] = {r.c, r.s, 0.0, -r.s, r.c, 0.0, 0.0, 0.0, 1.0};
   acst_status st = acst_rotate_state(stress, statev, model_.get(), Q);
   if (st.code != ACST_OK) return st;
   // Plane strain: eps_zz = 0; ABI strain is tension positive with engineering shear.
   const double de[6] = {L[0] * dt, L[3] * dt, 0.0, (L[1] + L[2]) * dt, 0.0, 0.0};
-  st = acst_update(stress, statev, nullptr, nullptr, model_.get(), de);
+  acst_counters counters{};
+  st = acst_update(stress, statev, nullptr, &counters, model_.get(), de);
   for (int parts = 2; st.code == ACST_STEP_REDUCTION && parts <= 64; parts *= 2) {
     double part[6];
     for (int k = 0; k < 6; ++k) part[k] = de[k] / parts;
@@ -84,12 +87,15 @@ acst_status Material::update(double* stress, double* statev, const double* L, do
     std::memcpy(s_try, stress, sizeof s_try);
     std::memcpy(q_try, statev, sizeof(double) * static_cast<size_t>(state_size_));
     for (int k = 0; k < parts && (k == 0 || st.code == ACST_OK); ++k)
-      st = acst_update(s_try, q_try, nullptr, nullptr, model_.get(), part);
+      st = acst_update(s_try, q_try, nullptr, &counters, model_.get(), part);
     if (st.code == ACST_OK) {
       std::memcpy(stress, s_try, sizeof s_try);
       std::memcpy(statev, q_try, sizeof(double) * static_cast<size_t>(state_size_));
     }
   }
+  // A reset leaves the stress exactly isotropic; strain after it in the same call would not.
+  stress_free = st.code == ACST_OK && counters.pressure_floor_resets > 0 && stress[0] == stress[1] &&
+                stress[1] == stress[2] && stress[3] == 0.0 && stress[4] == 0.0 && stress[5] == 0.0;
   if (st.code != ACST_OK && reproducer) {
     size_t length = 0;
     reproducer->clear();

@@ -59,8 +59,12 @@ class Material {
   // integrator asks for a smaller one. Returns ACST_OK or the failing status (stress and state
   // then keep their last good values, rotated); on a failure `reproducer`, when given, receives
   // the element-test scene that replays the failing increment (acst_reproducer; "" for the
-  // verification kinds, which the element driver cannot run).
-  acst_status update(double* stress, double* statev, const double* L, double dt, std::string* reproducer = nullptr) const;
+  // verification kinds, which the element driver cannot run). `stress_free` is set when the
+  // update ended at the material's pressure floor (the library reset the point to an isotropic
+  // p_min: soil in tension or at a free surface, without stiffness; never for the verification
+  // kinds, which have no floor).
+  acst_status update(double* stress, double* statev, const double* L, double dt, bool& stress_free,
+                     std::string* reproducer = nullptr) const;
 
  private:
   std::string name_;

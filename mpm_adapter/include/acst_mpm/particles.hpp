@@ -19,6 +19,7 @@ struct Particles {
   std::vector<double> wave_speed;
   std::vector<double> contact_friction;  // tangential force the footing's base holds, N/m along x
   std::vector<int> material;    // index into Simulation::materials
+  std::vector<int> stress_free;  // 1 while the material holds it at its pressure floor (docs/mpm.md)
   // Particles whose history is recorded (output/particle_histories), and per each its frame:
   // track_frame_size values (particle_track.hpp), checkpointed with the rest.
   std::vector<int> tracked;
