@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "acst_mpm/particle_track.hpp"
@@ -470,16 +469,6 @@ void Simulation::update_particles() {
     } else {
       vx1 = vx0 + (sax - ag * svx - ap * vx0) * clock_.dt;
       vy1 = vy0 + (say - ag * svy - ap * vy0) * clock_.dt;
-    }
-    static const bool hack = std::getenv("ACST_FLOOR_PIC") != nullptr;
-    if (hack) {
-      const double* s = &P.stress[6 * p];
-      const double pr = -(s[0] + s[1] + s[2]) / 3.0;
-      const double dev = std::fabs(s[0] + pr) + std::fabs(s[1] + pr) + std::fabs(s[3]);
-      if (pr < 0.51 && dev < 1e-3) {
-        vx1 = svx + (sax - ag * svx) * clock_.dt;
-        vy1 = svy + (say - ag * svy) * clock_.dt;
-      }
     }
     P.vx[p] = vx1;
     P.vy[p] = vy1;
