@@ -122,7 +122,8 @@ class Simulation {
 
   void prepare();
   void refresh_wave_speeds();
-  double contact_stiffness(std::size_t particle) const;
+  double stiffest_wave_speed() const;
+  double contact_stiffness(std::size_t particle, double wave_speed) const;
   // Velocity = momentum / mass with the constraints applied (0 on nodes without mass).
   void nodal_velocity(const double* px, const double* py, double* vx, double* vy);
   void xpic_velocity(int order);
