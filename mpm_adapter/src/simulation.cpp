@@ -104,7 +104,7 @@ double Simulation::stiffest_wave_speed() const {
 // The contact's penalty stiffness for particle p: k_n = factor * rho c^2 / h with rho the
 // particle's current density and c the stiffest soil's wave speed, not its own: a particle at the
 // pressure floor has almost no modulus, and with its own the side of a footing inclined at 40 deg
-// let heaved soil 25-80 mm in, which the base then pushed down as a spike of several times the
+// let heaved soil up to 0.1 m in, which the base then pushed down as a spike of several times the
 // load (docs/mpm.md, "The footing"). The time step already admits this spring (no extra cost).
 double Simulation::contact_stiffness(std::size_t p, double wave_speed) const {
   const Particles& P = particles_;
@@ -338,11 +338,11 @@ void Simulation::footing_contact() {
     const double* F = &P.F[4 * p];
     // The domain's stretch along the axes: the shear terms would tilt its faces, which the flat
     // footing keeps flat, and under the footing's edge would inflate the box into false overlap.
-    // Shrunk, never grown past l h: the time step holds a contact of at most 2 l h (stable_time_step),
-    // and soil torn thin behind a footing inclined at 40 deg (a particle at the floor stretched
-    // 2.9 times, flattened to 0.4) reached under the base's trailing corner, where the push grew
-    // its height faster than it moved the particle down: 4 to 16 mm of overlap and 45 m/s in 40
-    // steps (docs/mpm.md, "The footing").
+    // Shrunk, never grown past l h, the undeformed domain the B2GIMP weights use (and the longest
+    // contact stable_time_step allows for): soil torn thin behind a footing inclined at 40 deg (a
+    // particle at the floor stretched 2.9 times, flattened to 0.4) reached under the base's
+    // trailing corner by its stretch alone, and the push grew its height faster than it moved the
+    // particle down: 4 to 16 mm of overlap and 45 m/s in 40 steps (docs/mpm.md, "The footing").
     const double sx = std::min(std::fabs(F[0]), 1.0), sy = std::min(std::fabs(F[3]), 1.0);
     const ContactParticle cp{P.x[p], P.y[p], P.vx[p], P.vy[p], lh * sx, lh * sy, P.mass[p], contact_stiffness(p, c_contact)};
     touch[p] = f.contact(cp, P.contact_friction[p], dt);
