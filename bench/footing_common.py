@@ -1,5 +1,19 @@
-"""Helpers shared by the footing studies in bench/ (load curves, gnuplot quoting)."""
+"""Helpers shared by the footing studies in bench/ (command line, load curves, gnuplot quoting)."""
+import argparse
 import csv
+import os
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def study_arguments(doc, out_name, only_help):
+    """The command line of a study that runs acst_mpm cases: --out, --threads, --only, --tool."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", out_name))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--only", default="", help=only_help)
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    return ap.parse_args()
 
 
 def read_curve(path):
@@ -21,3 +35,11 @@ def value_at(xs, ys, x):
 def gp_quoted(text):
     """A gnuplot single-quoted string: names and paths never become script."""
     return "'" + str(text).replace("'", "''").replace("\n", " ") + "'"
+
+
+def max_kinetic_ratio(path, from_S_over_B=0.02):
+    """The largest kinetic-to-work ratio of a load record from S/B from_S_over_B on (the start's
+    transient left out, as acst_mpm's quasi-static check does)."""
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    return max(float(r["kinetic_over_work"]) for r in rows if float(r["S_over_B"]) >= from_S_over_B)

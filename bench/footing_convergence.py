@@ -7,16 +7,14 @@ run) and one overlay figure per lab test (OUT/<test>_curves.png) with the Kimura
 
   python3 bench/footing_convergence.py [--out DIR] [--threads N] [--only NAME,NAME...]
 """
-import argparse
 import csv
 import json
 import os
 import subprocess
 import sys
 
-from footing_common import gp_quoted, read_curve, value_at
+from footing_common import ROOT, gp_quoted, read_curve, study_arguments, value_at
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 # (test, lab curve, cell size label, scene file), coarse to fine; 0.09 m is the bundled scene.
 CASES = []
@@ -27,12 +25,7 @@ for test, base in (("V85.6", "kimura_V85.6_alpha0"), ("H86.7", "kimura_H86.7_alp
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "convergence"))
-    ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--only", default="", help="comma-separated scene names (file stems) to run; default: all")
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
-    a = ap.parse_args()
+    a = study_arguments(__doc__, "convergence", "comma-separated scene names (file stems) to run; default: all")
     os.makedirs(a.out, exist_ok=True)
     table = []
     for test, label, scene in CASES:

@@ -15,7 +15,6 @@ summary.json or failure record exists are reused, so the study resumes.
 
   python3 bench/footing_speedup.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
-import argparse
 import csv
 import json
 import math
@@ -23,9 +22,8 @@ import os
 import subprocess
 import sys
 
-from footing_common import gp_quoted, read_curve, value_at
+from footing_common import ROOT, gp_quoted, max_kinetic_ratio, read_curve, study_arguments, value_at
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE = os.path.join(ROOT, "data", "scenes", "mpm", "kimura_V85.6_alpha0.json")
 FACTORS = (2, 4, 8, 16, 32)
 CURVES = ("reference", "half_slow2", "half_slow4", "half_speed2", "half_speed4", "half_speed8", "half_mass4",
@@ -65,19 +63,8 @@ def scene_for(name, half, speed, mass, ramp, stress_update):
     return s
 
 
-def max_kinetic_ratio(path, from_S_over_B=0.02):
-    with open(path) as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    return max(float(r["kinetic_over_work"]) for r in rows if float(r["S_over_B"]) >= from_S_over_B)
-
-
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "footing_speedup"))
-    ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--only", default="", help="comma-separated case names to run; default: all")
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
-    a = ap.parse_args()
+    a = study_arguments(__doc__, "footing_speedup", "comma-separated case names to run; default: all")
     os.makedirs(a.out, exist_ok=True)
     table = []
     for name, half, speed, mass, ramp, stress_update in cases():

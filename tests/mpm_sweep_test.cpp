@@ -18,6 +18,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/input_error.hpp"
 #include "acst_mpm/fields.hpp"
+#include "acst_mpm/first_peak.hpp"
 #include "acst_mpm/sweep.hpp"
 #include "acst_mpm/sweep_case.hpp"
 #include "acst_mpm/sweep_runner.hpp"
@@ -413,7 +414,54 @@ TEST(SweepRow, AFailedRunsLastMomentsDoNotMakeItsPeak) {
   EXPECT_NEAR(row["q_at_S_over_B_0.2_kPa"].get<double>(), 750.0, 1e-6);
   EXPECT_TRUE(row["q_at_S_over_B_0.3_kPa"].is_null());  // within the failure's approach
   EXPECT_NEAR(row["final_S_over_B"].get<double>(), 0.305, 1e-9);
+  EXPECT_NEAR(row["q_first_peak_kPa"].get<double>(), 1000.0, 1e-6);  // the same peak: it is the only one
+  EXPECT_NEAR(row["S_first_peak_over_B"].get<double>(), 0.1, 1e-9);
   // The same record from a run that ended: every row counts.
   fs::rename(dir / "load_settlement.failed.csv", dir / "load_settlement.csv");
   EXPECT_NEAR(case_row(s.cases[0], dir.string(), "done", "", {})["q_ult_kPa"].get<double>(), 5000.0, 1e-6);
+}
+
+// A curve sampled every 0.001 B: q(S/B) given piecewise linear through the points (S, q).
+static std::pair<std::vector<double>, std::vector<double>> sampled(const std::vector<std::pair<double, double>>& knots) {
+  std::vector<double> S, q;
+  for (int k = 0; 0.001 * k <= knots.back().first + 1e-12; ++k) {
+    const double s = 0.001 * k;
+    std::size_t i = 1;
+    while (i + 1 < knots.size() && knots[i].first < s) ++i;
+    const auto [s0, q0] = knots[i - 1];
+    const auto [s1, q1] = knots[i];
+    S.push_back(s);
+    q.push_back(q0 + (q1 - q0) * (s - s0) / (s1 - s0));
+  }
+  return {S, q};
+}
+
+// Dense sand's footing curve may rise to a first peak, dip and rise to a higher hump (docs/mpm.md,
+// "Loading rate"): the first peak is the first load that no load within 0.01 B of it exceeds.
+TEST(FirstPeak, IsTheOnsetOfSofteningNotTheLargestLoad) {
+  // Up to 1000 at S/B 0.09, down to 950 at 0.1, up to 1300 at 0.15, down to 800 at 0.2.
+  const auto [S, q] = sampled({{0.0, 0.0}, {0.09, 1000.0}, {0.1, 950.0}, {0.15, 1300.0}, {0.2, 800.0}});
+  const auto f = acst::mpm::first_peak(S, q);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_NEAR(S[*f], 0.09, 1e-9);
+  EXPECT_NEAR(q[*f], 1000.0, 1e-9);
+}
+
+TEST(FirstPeak, IgnoresTheStartAndDipsShorterThanItsWindow) {
+  // A start transient at S/B 0.01 (600, then 300 at 0.02) comes before 0.03; a local maximum at
+  // 0.05 that the load passes again within 0.008 B is no peak; the next one, at 0.12, is.
+  const auto [S, q] = sampled({{0.0, 0.0}, {0.01, 600.0}, {0.02, 300.0}, {0.05, 1000.0}, {0.054, 990.0},
+                               {0.058, 1010.0}, {0.12, 1400.0}, {0.2, 900.0}});
+  const auto f = acst::mpm::first_peak(S, q);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_NEAR(S[*f], 0.12, 1e-9);
+}
+
+TEST(FirstPeak, NoneWhileTheLoadRisesOrWithinAWindowOfTheEnd) {
+  const auto rising = sampled({{0.0, 0.0}, {0.2, 2000.0}});
+  EXPECT_FALSE(acst::mpm::first_peak(rising.first, rising.second).has_value());
+  // The largest load 0.005 B before the record ends: the curve may still rise past it.
+  const auto late = sampled({{0.0, 0.0}, {0.195, 2000.0}, {0.2, 1900.0}});
+  EXPECT_FALSE(acst::mpm::first_peak(late.first, late.second).has_value());
+  EXPECT_FALSE(acst::mpm::first_peak({}, {}).has_value());
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
@@ -14,6 +15,7 @@
 #include "acst_common/result_folder.hpp"
 #include "acst_mpm/checkpoint.hpp"
 #include "acst_mpm/fields.hpp"
+#include "acst_mpm/first_peak.hpp"
 #include "acst_mpm/output.hpp"
 #include "acst_mpm/scatter.hpp"
 #include "acst_mpm/scene_size.hpp"
@@ -275,6 +277,9 @@ class Run {
     sum.S_ult_over_B = st_.peak.S_over_B;
     sum.S_ult = st_.peak.S_over_B * B_;
     sum.peak_reached = scene_.footing && sum.residual_V < 0.98 * sum.Q_ult;
+    std::vector<double> S, V;
+    for (const LoadRecord& r : st_.history) S.push_back(r.S_over_B), V.push_back(r.V_kN_per_m);
+    const std::optional<std::size_t> first = first_peak(S, V);
     // The whole record is judged (it is checkpointed, so a resumed run judges its whole run too).
     double max_ratio = 0.0;
     const LoadRecord* worst = nullptr;
@@ -304,6 +309,8 @@ class Run {
                                             {"S_ult_m", sum.S_ult},
                                             {"S_ult_over_B", sum.S_ult_over_B},
                                             {"peak_reached", sum.peak_reached},
+                                            {"q_first_peak_kPa", first ? nlohmann::ordered_json(V[*first] / B_) : nullptr},
+                                            {"S_first_peak_over_B", first ? nlohmann::ordered_json(S[*first]) : nullptr},
                                             {"residual_V_kN_per_m", sum.residual_V},
                                             {"final_S_over_B", S_over_B()},
                                             {"footing_contact", footing_contact_name()},

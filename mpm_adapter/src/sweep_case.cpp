@@ -10,6 +10,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
 #include "acst_common/result_folder.hpp"
+#include "acst_mpm/first_peak.hpp"
 #include "acst_mpm/runner.hpp"
 
 namespace acst::mpm {
@@ -137,6 +138,13 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
     row["S_ult_over_B"] = curve.S_over_B[k];
     row["H_at_peak_kN_per_m"] = curve.H[k];
     row["M_at_peak_kNm_per_m"] = curve.M[k];
+    if (const auto f = first_peak(curve.S_over_B, curve.V)) {
+      row["q_first_peak_kPa"] = curve.q[*f];
+      row["S_first_peak_over_B"] = curve.S_over_B[*f];
+    } else {
+      row["q_first_peak_kPa"] = nullptr;  // the load rose to the end of the record
+      row["S_first_peak_over_B"] = nullptr;
+    }
     for (double x : load_at_S_over_B) row[load_at_column(x)] = q_at(curve, x);
     row["final_S_over_B"] = end_S_over_B;
     // acst_mpm's rule (runner.cpp): the load has fallen 2 % below its largest value. A run that
