@@ -1,7 +1,9 @@
 """Helpers shared by the footing studies in bench/ (command line, load curves, gnuplot quoting)."""
 import argparse
 import csv
+import math
 import os
+import subprocess
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -43,3 +45,27 @@ def max_kinetic_ratio(path, from_S_over_B=0.02):
     with open(path) as f:
         rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     return max(float(r["kinetic_over_work"]) for r in rows if float(r["S_over_B"]) >= from_S_over_B)
+
+
+def rms_difference_pct(curve, ref_curve, upto, q_scale):
+    """RMS of curve - ref_curve over S/B 0.005..upto in steps of 0.005, in % of q_scale."""
+    grid = [0.005 * k for k in range(1, int(round(upto / 0.005)) + 1)]
+    d = [value_at(*curve, x) - value_at(*ref_curve, x) for x in grid]
+    return round(100.0 * math.sqrt(sum(v * v for v in d) / len(d)) / q_scale, 2)
+
+
+def plot_beside_kimura(png, panels, stop_s_over_b):
+    """One panel per Kimura test, {test: (title, [(load record, label), ...])}, each with the
+    test's measured curve (data/lab/kimura_1985/TEST.csv)."""
+    lines = ["set terminal pngcairo size 1400,600 noenhanced", "set datafile separator ','", "set datafile commentschars '#'",
+             f"set output {gp_quoted(png)}", "set multiplot layout 1,2",
+             "set grid", "set key bottom right", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'",
+             f"set xrange [0:{stop_s_over_b}]", "set yrange [0:2600]"]
+    for test, (title, curves) in panels.items():
+        plots = [f"{gp_quoted(record)} using 'S_over_B':'q_kPa' with lines lw 2 title {gp_quoted(label)}" for record, label in curves]
+        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
+        plots.append(f"{gp_quoted(lab)} using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 lc rgb 'black' "
+                     f"title {gp_quoted('Kimura et al. (1985) ' + test)}")
+        lines += [f"set title {gp_quoted(title)}", "plot " + ", ".join(plots)]
+    lines += ["unset multiplot", ""]
+    subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)

@@ -18,12 +18,11 @@ processes with --only (each process one case at a time).
 """
 import csv
 import json
-import math
 import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, max_kinetic_ratio, read_curve, study_arguments, value_at
+from footing_common import ROOT, max_kinetic_ratio, plot_beside_kimura, read_curve, rms_difference_pct, study_arguments, value_at
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 TESTS = {"V85.6": "kimura_V85.6_alpha0_half.json", "H86.7": "kimura_H86.7_alpha90.json"}
@@ -67,42 +66,52 @@ def scene_for(test, num, den, cfl):
     return s
 
 
+def run_case(a, name, make_scene):
+    """Runs case NAME (its scene from make_scene()) into OUT/NAME unless --only leaves it out or
+    its summary.json exists; returns its row (loads at MARKS, first peak, largest load, kinetic
+    ratio, steps, wall time, the record and its curve) or None if it has no summary."""
+    run_dir = os.path.join(a.out, name)
+    summary = os.path.join(run_dir, "summary.json")
+    if (not a.only or name in a.only.split(",")) and not os.path.exists(summary):
+        path = os.path.join(a.out, name + ".json")
+        with open(path, "w") as f:
+            json.dump(make_scene(), f, indent=2)
+        print(f"== {name}", flush=True)
+        done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
+        if done.returncode != 0:
+            print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
+    if not os.path.exists(summary):
+        return None
+    with open(summary) as f:
+        s = json.load(f)
+    record = os.path.join(run_dir, "load_settlement.csv")
+    S, q = read_curve(record)
+    k = max(range(len(S)), key=lambda i: q[i])
+    f1 = first_peak(S, q)
+    row = {"case": name, "q_max_kPa": round(q[k], 1), "S_at_max_over_B": round(S[k], 4),
+           "q_first_peak_kPa": "" if f1 is None else round(q[f1], 1), "S_first_peak_over_B": "" if f1 is None else round(S[f1], 4),
+           "max_kinetic_ratio": float("%.3g" % max_kinetic_ratio(record)),
+           "steps": s["steps"], "wall_s": round(s["wall_s"], 1), "threads": s["threads"], "record": record, "curve": (S, q)}
+    for m in MARKS:
+        row[f"q_at_{m}_kPa"] = round(value_at(S, q, m), 1)
+    return row
+
+
 def main():
     a = study_arguments(__doc__, "footing_loading_rate", "comma-separated case names to run (e.g. V85.6_speed_1_2); default: all")
     os.makedirs(a.out, exist_ok=True)
     table = []
     for test, num, den, cfl in CASES:
         name = case_name(test, num, den, cfl)
-        run_dir = os.path.join(a.out, name)
-        summary = os.path.join(run_dir, "summary.json")
-        if (not a.only or name in a.only.split(",")) and not os.path.exists(summary):
-            path = os.path.join(a.out, name + ".json")
-            with open(path, "w") as f:
-                json.dump(scene_for(test, num, den, cfl), f, indent=2)
-            print(f"== {name}", flush=True)
-            done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
-            if done.returncode != 0:
-                print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
-        if not os.path.exists(summary):
+        row = run_case(a, name, lambda: scene_for(test, num, den, cfl))
+        if row is None:
             continue
-        with open(summary) as f:
-            s = json.load(f)
-        record = os.path.join(run_dir, "load_settlement.csv")
-        S, q = read_curve(record)
-        k = max(range(len(S)), key=lambda i: q[i])
-        f1 = first_peak(S, q)
-        row = {"case": name, "test": test, "speed_m_per_s": round(0.045 * num / den, 6), "cfl": cfl, "q_max_kPa": round(q[k], 1),
-               "S_at_max_over_B": round(S[k], 4),
-               "q_first_peak_kPa": "" if f1 is None else round(q[f1], 1), "S_first_peak_over_B": "" if f1 is None else round(S[f1], 4),
-               "max_kinetic_ratio": float("%.3g" % max_kinetic_ratio(record)),
-               "steps": s["steps"], "wall_s": round(s["wall_s"], 1), "threads": s["threads"], "record": record, "curve": (S, q)}
-        for m in MARKS:
-            row[f"q_at_{m}_kPa"] = round(value_at(S, q, m), 1)
+        row.update({"test": test, "speed_m_per_s": round(0.045 * num / den, 6), "cfl": cfl})
         table.append(row)
         print(f"{name:26s} q at S/B {', '.join(str(m) for m in MARKS)}: "
-              f"{', '.join('%.0f' % row[f'q_at_{m}_kPa'] for m in MARKS)} kPa; largest {q[k]:.0f} kPa at S/B {S[k]:.3f}; "
+              f"{', '.join('%.0f' % row[f'q_at_{m}_kPa'] for m in MARKS)} kPa; largest {row['q_max_kPa']:.0f} kPa at S/B {row['S_at_max_over_B']}; "
               f"first peak {row['q_first_peak_kPa']} kPa at S/B {row['S_first_peak_over_B']}; "
-              f"K/W {row['max_kinetic_ratio']:.1e}; {s['steps']} steps, {s['wall_s']:.0f} s")
+              f"K/W {row['max_kinetic_ratio']:.1e}; {row['steps']} steps, {row['wall_s']:.0f} s")
     # Each curve against its test's run at the study's settings: RMS of the difference over S/B
     # 0.005-0.09 (before any curve's first peak) and over 0.005-0.2, over that run's largest load.
     for r in table:
@@ -112,9 +121,7 @@ def main():
             if ref is None:
                 r[key] = ""
                 continue
-            grid = [0.005 * k for k in range(1, int(round(upto / 0.005)) + 1)]
-            d = [value_at(*r["curve"], x) - value_at(*ref["curve"], x) for x in grid]
-            r[key] = round(100.0 * math.sqrt(sum(v * v for v in d) / len(d)) / ref["q_max_kPa"], 2)
+            r[key] = rms_difference_pct(r["curve"], ref["curve"], upto, ref["q_max_kPa"])
         print(f"{r['case']:26s} RMS against {r['test']} at 0.045 m/s, cfl 0.5: {r['rms_to_0.09_pct']} % to S/B 0.09, "
               f"{r['rms_to_0.2_pct']} % to 0.2")
     fields = ["case", "test", "speed_m_per_s", "cfl"] + [f"q_at_{m}_kPa" for m in MARKS] + \
@@ -123,19 +130,10 @@ def main():
         w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         w.writerows(table)
-    lines = ["set terminal pngcairo size 1400,600 noenhanced", "set datafile separator ','", "set datafile commentschars '#'",
-             f"set output {gp_quoted(os.path.join(a.out, 'loading_rate.png'))}", "set multiplot layout 1,2",
-             "set grid", "set key bottom right", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'",
-             f"set xrange [0:{STOP_S_OVER_B}]", "set yrange [0:2600]"]
-    for test in TESTS:
-        plots = [f"{gp_quoted(r['record'])} using 'S_over_B':'q_kPa' with lines lw 2 title {gp_quoted('%g m/s, cfl %g' % (r['speed_m_per_s'], r['cfl']))}"
-                 for r in table if r["test"] == test]
-        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
-        plots.append(f"{gp_quoted(lab)} using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 lc rgb 'black' "
-                     f"title {gp_quoted('Kimura et al. (1985) ' + test)}")
-        lines += [f"set title {gp_quoted(f'Kimura {test}, cell 0.09 m, half domain: footing speed')}", "plot " + ", ".join(plots)]
-    lines += ["unset multiplot", ""]
-    subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
+    plot_beside_kimura(os.path.join(a.out, "loading_rate.png"),
+                       {test: (f"Kimura {test}, cell 0.09 m, half domain: footing speed",
+                               [(r["record"], "%g m/s, cfl %g" % (r["speed_m_per_s"], r["cfl"])) for r in table if r["test"] == test])
+                        for test in TESTS}, STOP_S_OVER_B)
     print(f"wrote {os.path.join(a.out, 'loading_rate.csv')} and loading_rate.png")
     return 0
 

@@ -309,6 +309,40 @@ TEST(CAbiConsistency, UmatPlaneStrainMatchesCppApi) {
   EXPECT_LT(stress[3], -1.0) << "the simple shear builds a shear stress of the strain's sign (tension positive)";
 }
 
+// PROPS(23) carries the Lode form: with 1 umat_ is the material whose JSON says "lode_form": 1
+// (a plane-strain path, off the compression meridian, where the forms differ), and 0.5 is refused.
+TEST(CAbiConsistency, UmatLodeFormFromProps23MatchesTheJsonMaterial) {
+  nlohmann::json j = nlohmann::json::parse(acst::test::read_text(guide_path));
+  const std::vector<double> li_props = props_from_json(j.dump());
+  j["parameters"]["lode_form"] = 1;
+  const acst::Material mat = acst::Material::from_json(j.dump());
+  std::vector<double> props = li_props;
+  props.insert(props.end(), {0.0, 0.0, 1.0});  // PROPS(21) reset, PROPS(22) rotate with DROT, PROPS(23) Willam & Warnke
+  ModelHandle h(j.dump());
+  State ref = mat.initial_state(acst::test::isotropic_stress(p0), e0, Eigen::Vector3d(0.0, 1.0, 0.0));
+  double stress6[6], statev[ACST_NSTATV], li_statev[ACST_NSTATV];
+  const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {0.0, 1.0, 0.0};
+  ASSERT_EQ(acst_initial_state(statev, stress6, h.model, s0, e0, b).code, ACST_OK);
+  std::copy(statev, statev + ACST_NSTATV, li_statev);
+  double stress[4] = {-p0, -p0, -p0, 0.0}, li_stress[4] = {-p0, -p0, -p0, 0.0};
+  const Sym inc = (Sym() << -4e-5, 1e-4, 0.0, 0.0, 0.0, 0.0).finished();  // plane strain: eps_33 = 0
+  const std::vector<double> d6 = to_abi_strain(inc);
+  const double d[4] = {d6[0], d6[1], d6[2], d6[3]};
+  UmatCall umat;
+  for (int step = 0; step < path_steps; ++step) {
+    ASSERT_EQ(mat.update(ref, inc).status, acst::integration::Status::ok);
+    umat(stress, statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+    umat(li_stress, li_statev, d, 4, ACST_NSTATV, li_props.data(), static_cast<int>(li_props.size()));
+    ASSERT_EQ(umat.pnewdt, 1.0) << "step " << step;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(stress[i], -ref.stress[i], tight * max_abs(ref.stress)) << "step " << step << ", " << i;
+  }
+  // The two forms part: sigma_22 (the loaded axis) differs by more than a kPa after 1.2 % strain.
+  EXPECT_GT(std::abs(stress[1] - li_stress[1]), 1.0);
+  props.back() = 0.5;
+  umat(stress, statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  EXPECT_LT(umat.pnewdt, 1.0) << "PROPS(23) = 0.5 is neither form";
+}
+
 // A failing increment asks for a smaller step and leaves stress and state as they were.
 TEST(CAbiConsistency, FailingIncrementRequestsStepReductionAndLeavesStateUntouched) {
   nlohmann::json j = nlohmann::json::parse(acst::test::read_text(guide_path));

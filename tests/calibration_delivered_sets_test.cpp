@@ -41,6 +41,7 @@ TEST_P(DeliveredSet, ReproducesItsReport) {
 
 INSTANTIATE_TEST_SUITE_P(Toyoura, DeliveredSet,
                          ::testing::Values(Delivered{"toyoura_acst", "toyoura_acst_calibrated"},
+                                           Delivered{"toyoura_acst_li2002", "toyoura_acst_li2002_calibrated"},
                                            Delivered{"toyoura_isotropic", "toyoura_isotropic_calibrated"}));
 
 }  // namespace

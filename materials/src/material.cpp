@@ -26,7 +26,7 @@ State Material::initial_state(const Sym& stress, double void_ratio, const Eigen:
   s.stress = stress;
   s.void_ratio = void_ratio;
   s.fabric = initial_fabric(parameters_.F0, deposition_direction);
-  s.H = yield_value(stress, parameters_.c, parameters_.R_tolerance, 0.0);  // on the cone through the stress
+  s.H = yield_value(stress, lode_shape(parameters_), parameters_.R_tolerance, 0.0);  // on the cone through the stress
   s.substep_hint = 1.0;
   return s;
 }

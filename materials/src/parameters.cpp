@@ -29,6 +29,19 @@ void check(const char* name, double v, double lo, bool lo_open, double hi, bool 
 }  // namespace
 
 void validate(const Parameters& p) {
+  // The Lode form first: it sets the range of c (Li's g is convex from 0.7 only).
+  check("lode_form", p.lode_form, 0.0, false, 1.0, false);
+  if (p.lode_form != 0.0 && p.lode_form != 1.0) {
+    std::ostringstream os;
+    os << "parameter 'lode_form' = " << p.lode_form << " must be 0 (Li 2002) or 1 (Willam & Warnke 1975)";
+    throw ParameterRangeError(os.str(), "lode_form");
+  }
+  if (p.lode_form == 0.0 && !(p.c >= 0.7 && p.c <= 1.0)) {
+    std::ostringstream os;
+    os << "parameter 'c' = " << p.c << " is outside its allowed range [0.7, 1] with lode_form 0 (Li's g is convex"
+       << " from 0.7; lode_form 1, Willam & Warnke, allows (0.5, 1])";
+    throw ParameterRangeError(os.str(), "c");
+  }
   for (const ParameterInfo& info : parameter_table)
     check(info.name, p.*info.member, info.lo, info.lo_open, info.hi, info.hi_open);
   check("e_max", p.e_max, p.e_min, true, 2.97, true);  // the one range set by another parameter

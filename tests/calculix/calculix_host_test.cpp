@@ -131,6 +131,7 @@ std::vector<double> deck_props(const std::string& include) {
 nlohmann::json material_of(const std::vector<double>& props) {
   nlohmann::json parameters;
   for (int i = 0; i < acst::parameter_count; ++i) parameters[acst::parameter_table[i].name] = props.at(i);
+  if (props.size() > 22) parameters["lode_form"] = props[22];  // PROPS(23)
   return {{"model", "ACST"}, {"parameters", parameters}, {"integrator", {{"scheme", "ME"}, {"stol", props.at(19)}}}};
 }
 
@@ -197,12 +198,13 @@ TEST(CalculixDecks, PropsAreTheCalibratedSet) {
       nlohmann::json::parse(acst::test::read_text("data/parameters/toyoura_acst_calibrated.json")).at("parameters");
   for (const char* include : {"acst_material.inp", "acst_material_nl.inp"}) {
     const std::vector<double> props = deck_props(include);
-    ASSERT_EQ(props.size(), 22u) << include;
+    ASSERT_EQ(props.size(), 23u) << include;
     for (int i = 0; i < acst::parameter_count; ++i) {
       const double v = set.at(acst::parameter_table[i].name).get<double>();
       EXPECT_NEAR(props[i], v, 1e-11 * std::abs(v)) << include << " PROPS(" << i + 1 << ")";  // 12 printed digits
     }
     EXPECT_EQ(props[21], std::string(include) == "acst_material.inp" ? 0.0 : 1.0) << include << " PROPS(22)";
+    EXPECT_EQ(props[22], set.value("lode_form", 0.0)) << include << " PROPS(23): the set's Lode form";
   }
 }
 

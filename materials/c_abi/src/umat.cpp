@@ -46,6 +46,7 @@ Eigen::Matrix3d rotation_increment(const double* drot) {
 acst::Material material_from_props(const double* props, int nprops) {
   acst::Parameters p;
   for (int i = 0; i < acst::parameter_count; ++i) acst::parameter_by_index(p, i) = props[i];
+  if (nprops > 22) p.lode_form = props[22];  // checked with the others (0 or 1)
   acst::integration::Options o;
   if (nprops > 18) {
     const int code = static_cast<int>(props[18]);

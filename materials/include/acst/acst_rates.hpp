@@ -55,7 +55,7 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
 
 inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
                                             const Sym& strain_direction) {
-  return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, prm.c, prm.R_tolerance, strain_direction));
+  return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, lode_shape(prm), prm.R_tolerance, strain_direction));
 }
 
 // D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I) = 2G n + sqrt(2/3) K D I: the stress relaxed per
@@ -118,7 +118,7 @@ class AcstRates {
   }
 
   double yield_value(const Vector& y, double H, const Sym&) const {
-    return acst::yield_value(stress(y), prm_.c, prm_.R_tolerance, H);
+    return acst::yield_value(stress(y), lode_shape(prm_), prm_.R_tolerance, H);
   }
 
   // Cosine between df/dsigma at y and the elastic trial stress increment; 0 (neutral) on the
@@ -143,7 +143,7 @@ class AcstRates {
 
   // H = R/g(theta): exact drift correction after a plastic substep.
   double hardening_memory(const Vector& y, const Sym&) const {
-    return acst::yield_value(stress(y), prm_.c, prm_.R_tolerance, 0.0);
+    return acst::yield_value(stress(y), lode_shape(prm_), prm_.R_tolerance, 0.0);
   }
 
   // Why y cannot be taken (none: it can): p below the floor, a void ratio out of its range, or
@@ -174,7 +174,7 @@ class AcstRates {
 
   const StressRatioState& ratio_state(const Sym& sigma, const Sym& strain_direction) const {
     if (sigma != last_sigma_ || strain_direction != last_direction_) {
-      last_ratio_ = stress_ratio_state(sigma, prm_.c, prm_.R_tolerance, strain_direction);
+      last_ratio_ = stress_ratio_state(sigma, lode_shape(prm_), prm_.R_tolerance, strain_direction);
       last_sigma_ = sigma;
       last_direction_ = strain_direction;
     }

@@ -1,5 +1,6 @@
 #pragma once
-// Lode angle and the Lode interpolation function g(theta) of Li (2002).
+// Lode angle and the Lode interpolation function g(theta): Li (2002), the default, or, as an
+// option, Willam & Warnke (1975) (docs/model.md section 1).
 #include <algorithm>
 #include <cmath>
 
@@ -28,6 +29,35 @@ inline LodeInterpolation lode_interpolation(double c, double sin3theta) {
   const double g = 2.0 * c * (1.0 + c) / (a + root);
   const double dg_ds = -g * b / (2.0 * root * (a + root));
   return {g, dg_ds};
+}
+
+// Willam & Warnke (1975)'s elliptic interpolation with r_c = 1, r_t = c; in terms of
+// x = cos(theta_w), theta_w = acos(s)/3 the angle from the extension meridian (s = 4x^3 - 3x):
+//   g = [2(1-c^2) x + (2c-1) sqrt(4(1-c^2) x^2 + 5c^2 - 4c)] / [4(1-c^2) x^2 + (2c-1)^2].
+// Convex for 1/2 < c <= 1, so it reaches lower c than Li's form (convex from 0.7),
+// and at a given c it is lower between the meridians. dg/ds = (dg/dx)/(12x^2 - 3); at triaxial
+// compression (x = 1/2) both vanish, and within delta = x - 1/2 < 1e-6 of it the quotient loses
+// digits, so there dg/ds takes its expansion -a/(3b^2) + delta a (2-c)^2/(3b^4), a = 1-c^2,
+// b = 2c-1 (derived symbolically; tests/lode_willam_warnke_test.cpp checks the joint). The arc is
+// continued by reflection across the meridians, so g is C2 there, not analytic: dg/ds has a
+// sqrt(1 + s) term at compression.
+// Out of line (src/lode.cpp): inlined, its acos and cos slowed every update with Li's form by
+// 4-11 % (bench/RESULTS.md section 1j).
+LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
+
+enum class LodeForm { li2002, willam_warnke };
+
+// The Lode interpolation a material uses: its c and its form (Li 2002 unless chosen otherwise).
+// Implicit from c alone, for the default form.
+struct LodeShape {
+  LodeShape(double c_, LodeForm form_ = LodeForm::li2002) : c(c_), form(form_) {}  // NOLINT(google-explicit-constructor)
+  double c;
+  LodeForm form;
+};
+
+inline LodeInterpolation lode_interpolation(const LodeShape& shape, double sin3theta) {
+  return shape.form == LodeForm::willam_warnke ? willam_warnke_interpolation(shape.c, sin3theta)
+                                               : lode_interpolation(shape.c, sin3theta);
 }
 
 }  // namespace acst

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "acst/lode.hpp"
 #include "acst_common/input_error.hpp"
 
 namespace acst {
@@ -47,6 +48,8 @@ struct Parameters {
   double p_min = 0.5;       // kPa: lowest mean stress a substep may reach
   double h_min = 1e-3;      // floor of h = h1 - h2 e
   double R_tolerance = 1e-9;  // below this R the loading direction is taken from the strain increment
+  // Lode interpolation (docs/model.md section 1): 0 Li (2002), 1 Willam & Warnke (1975).
+  double lode_form = 0.0;
 
   Variant variant = Variant::anisotropic;
 };
@@ -81,7 +84,8 @@ inline constexpr ParameterInfo parameter_table[] = {
     {"G0", &Parameters::G0, 0, no_upper_bound, true, true, "-", false, false, true, "shear modulus constant"},
     {"nu", &Parameters::nu, 0, 0.5, false, true, "-", false, false, true, "Poisson's ratio"},
     {"Mc", &Parameters::Mc, 0, 3, true, false, "-", false, false, true, "critical stress ratio in compression"},
-    {"c", &Parameters::c, 0.7, 1, false, false, "-", false, false, true, "extension/compression ratio of g (convex from 0.7)"},
+    {"c", &Parameters::c, 0.5, 1, true, false, "-", false, false, true,
+     "extension/compression ratio of g (convex from 0.7 with lode_form 0)"},
     {"e_Gamma", &Parameters::e_Gamma, 0, 2.97, true, true, "-", false, false, true, "critical void ratio at p = 0"},
     {"lambda_c", &Parameters::lambda_c, 0, no_upper_bound, true, true, "-", false, false, true, "slope of the critical state line"},
     {"xi", &Parameters::xi, 0, 2, true, false, "-", false, false, true, "exponent of the critical state line"},
@@ -99,6 +103,8 @@ inline constexpr ParameterInfo parameter_table[] = {
     {"h_min", &Parameters::h_min, 0, no_upper_bound, true, true, "-", false, true, false, "floor of h = h1 - h2 e (1e-3)"},
     {"R_tolerance", &Parameters::R_tolerance, 0, 1e-3, true, false, "-", false, true, false,
      "below it n follows the strain increment (1e-9)"},
+    {"lode_form", &Parameters::lode_form, 0, 1, false, false, "-", false, true, false,
+     "g(theta): 0 Li (2002), 1 Willam & Warnke (1975) (0)"},
 };
 
 inline constexpr int parameter_table_size = sizeof parameter_table / sizeof parameter_table[0];
@@ -137,6 +143,11 @@ double parameter_by_index(const Parameters& p, int i);
 
 // The table as Markdown, for docs/model.md section 9 (a test keeps the two equal).
 std::string parameter_table_markdown();
+
+// The Lode interpolation of a parameter set.
+inline LodeShape lode_shape(const Parameters& p) {
+  return {p.c, p.lode_form == 1.0 ? LodeForm::willam_warnke : LodeForm::li2002};
+}
 
 // Relative density Dr (0..1) from the void ratio and back.
 inline double relative_density(const Parameters& p, double e) { return (p.e_max - e) / (p.e_max - p.e_min); }

@@ -34,7 +34,7 @@ inline double yield_function(double R, double g, double H) { return R / g - H; }
 // f = R/g(theta) - H from the stress alone, without the loading direction (the cheap check of
 // every elastic trial). With d = dev(sigma): R = sqrt(3/2) |d|/|p| and r_hat = sign(p) d/|d|, so
 // sin 3theta = sign(p) (-3 sqrt(6) det(d) / |d|^3) needs no tensor division (bench/RESULTS.md 1).
-inline double yield_value(const Sym& sigma, double c, double R_tolerance, double H) {
+inline double yield_value(const Sym& sigma, const LodeShape& c, double R_tolerance, double H) {
   const double p = mean_stress(sigma);
   const Sym d = deviator(sigma);
   const double d_norm = norm(d);
@@ -48,7 +48,8 @@ inline double yield_value(const Sym& sigma, double c, double R_tolerance, double
 // n = dev(N)/|dev(N)| with dev(N) = [sqrt(3/2)(g + 3 s g') r_hat + 9 g' (r_hat^2 - I/3)] / g^2,
 // N = d(R/g)/dr, s = sin 3theta. Below R_tolerance, n is the unit deviatoric part of
 // `fallback_direction` (the strain increment) and g is g(s = 0); n = 0 if that is zero too.
-inline StressRatioState stress_ratio_state(const Sym& sigma, double c, double R_tolerance, const Sym& fallback_direction) {
+inline StressRatioState stress_ratio_state(const Sym& sigma, const LodeShape& c, double R_tolerance,
+                                           const Sym& fallback_direction) {
   // Reciprocals computed once and multiplied: a tensor divided by a scalar is six divisions in a
   // serial chain of them, the cost of this function (bench/RESULTS.md section 1, proposal 4).
   StressRatioState st;
