@@ -46,7 +46,7 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
   res.failure = IncrementFailure::not_converged;
   // A test symmetric about axis 1 is solved as one: its iterates and states are kept symmetric,
   // and the update's error in sigma_22 - sigma_33 is dropped with the mirror's average.
-  const bool axisymmetric = symmetric_23(ctl) && symmetric_23(state);
+  const bool axisymmetric = symmetric_23(state) && symmetric_23(ctl);
   Sym deps = axisymmetric ? symmetrized_23(guess) : guess;
   const double stress_scale = std::max(mean_stress(state.stress), atmospheric_pressure);
   integration::Counters work;

@@ -4,7 +4,8 @@
 // axis 1) keeps it in exact arithmetic. The explicit stress update does not: near the critical
 // state, with a Lode function pointed at compression, the mode sigma_22 - sigma_33 is so stiff
 // that the update's error in it (within STOL) is far above Newton's tolerance, and the iteration
-// on that mode alone can take most of a fit's time (docs/element-tests.md, "Mixed control").
+// on that mode alone can take most of a fit's time (docs/element-tests.md, "Mixed control on
+// the axis of symmetry").
 #include "acst/state.hpp"
 #include "acst_driver/mixed_control.hpp"
 
@@ -19,7 +20,8 @@ Sym symmetrized_23(const Sym& a);
 bool symmetric_23(const Sym& a);  // exactly equal to its mirror image
 bool symmetric_23(const State& s);  // stress and fabric
 
-// Every constraint row, mirrored, is a row of the control or its negative (with the same value).
+// The mirrored constraints (rows with their values) are those of the control: each mirrored row
+// lies in the span of the rows, with the value the same combination gives.
 bool symmetric_23(const LinearControl& control);
 
 }  // namespace acst::driver
