@@ -4,7 +4,6 @@
 #include <algorithm>
 
 #include "acst/yield_function.hpp"
-#include "acst_driver/axial_symmetry.hpp"
 
 namespace acst::driver {
 
@@ -44,10 +43,7 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
                                 const NewtonOptions& o) {
   IncrementResult res;
   res.failure = IncrementFailure::not_converged;
-  // A test symmetric about axis 1 is solved as one: its iterates and states are kept symmetric,
-  // and the update's error in sigma_22 - sigma_33 is dropped with the mirror's average.
-  const bool axisymmetric = symmetric_23(state) && symmetric_23(ctl);
-  Sym deps = axisymmetric ? symmetrized_23(guess) : guess;
+  Sym deps = guess;
   const double stress_scale = std::max(mean_stress(state.stress), atmospheric_pressure);
   integration::Counters work;
   for (int it = 1; it <= o.max_iterations; ++it) {
@@ -59,10 +55,6 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
     if (res.material.status != integration::Status::ok) {
       res.failure = IncrementFailure::material;
       break;
-    }
-    if (axisymmetric) {
-      trial.stress = symmetrized_23(trial.stress);
-      trial.fabric = symmetrized_23(trial.fabric);
     }
     const Sym r = ctl.A * (trial.stress - state.stress) + ctl.B * deps - ctl.c;
     // Rows scaled by their largest entry, so that stress rows (~ stiffness) and strain rows (~1) weigh alike.
@@ -80,8 +72,7 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
       res.failure = IncrementFailure::singular_jacobian;
       break;
     }
-    Sym correction = -lu.solve(rs);
-    if (axisymmetric) correction = symmetrized_23(correction);
+    const Sym correction = -lu.solve(rs);
     const bool small_correction = correction.cwiseAbs().maxCoeff() <= o.strain_tolerance + 1e-8 * deps.cwiseAbs().maxCoeff();
     if (converged_residual(ctl, r, stress_scale, o) && small_correction) {
       state = trial;
