@@ -106,6 +106,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"\"xi_deg\": [90]", "\"chi_deg\": [90]", "/experiments/3/rows/chi_deg", "no column"},
         BadCase{"\"per_group\": true", "\"per_group\": true, \"group_start\": {\"z\": 0.3}", "/parameters/F0/group_start/z", "no experiment"},
         BadCase{"\"void_ratio_at_kPa\": 29.4", "\"void_ratio_at_kPa\": 29.4, \"strain_range_pct\": [5, 1]", "/experiments/0/strain_range_pct", "lower < upper"},
+        BadCase{"\"weights\"", "\"optimizer\": {\"abandon_factor\": 0.5}, \"weights\"", "/optimizer/abandon_factor", "at least 1"},
+        BadCase{"\"weights\"", "\"optimizer\": {\"abandon_after\": 0}, \"weights\"", "/optimizer/abandon_after", "out of range"},
         BadCase{"{\"file\": \"../parameters/toyoura_acst_guide.json\"}", "{\"file\": \"../parameters/toyoura_isotropic_literature.json\"}",
                 "/parameters/F0", "isotropic model has no fabric"}));
 

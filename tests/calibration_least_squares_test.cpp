@@ -1,6 +1,6 @@
 // The bounded least-squares solver and its uncertainty against closed forms: a straight-line fit
-// (normal equations), the Rosenbrock valley, a parameter the residuals do not see, and the
-// logistic bound transformation.
+// (normal equations), the Rosenbrock valley, a parameter the residuals do not see, the logistic
+// bound transformation, and the multi-start's abandoning of fits that lag far behind.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -118,6 +118,50 @@ TEST(LeastSquares, BoundHoldsAndIsReported) {
   EXPECT_LE(f.theta[0], 1.0);
   EXPECT_GT(f.theta[0], 0.99);
   EXPECT_TRUE(f.uncertainty.at_bound[0]);
+}
+
+// cost = sin^2 x + 0.09 (x - 0.5)^2 has its global minimum near x = 0.05 (cost 0.02) and local
+// minima near -pi, pi and 2 pi (cost 1.2, 0.62 and 3.0). Started at 0.2, the first fit finds the
+// global one; a fit from a design point that, after one iteration, is still above ten times that
+// cost is abandoned. What the multi-start returns stays the same; the price is that such a fit
+// might have found a better minimum later (not here: run to their ends, none beats the first).
+TEST(LeastSquares, AFitFarBehindTheBestIsAbandonedWithoutChangingTheResult) {
+  const auto p = make(Eigen::VectorXd::Constant(1, 0.2), Eigen::VectorXd::Constant(1, -8.0), Eigen::VectorXd::Constant(1, 8.0), 2,
+                      [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return Eigen::Vector2d(std::sin(x[0]), 0.3 * (x[0] - 0.5)); });
+  OptimizerSettings o;
+  o.design_points = 8;
+  o.starts = 5;
+  o.max_iterations = 100;
+  o.xtol = 1e-12;
+  const FitResult all = fit(p, o);
+  o.abandon_factor = 10.0;
+  o.abandon_after = 1;
+  const FitResult raced = fit(p, o);
+
+  ASSERT_EQ(all.best, 0u);
+  EXPECT_EQ(raced.best, all.best);
+  EXPECT_EQ(raced.theta[0], all.theta[0]);  // the same iterates: bit for bit
+  EXPECT_EQ(raced.cost, all.cost);
+  ASSERT_EQ(raced.local_fits.size(), all.local_fits.size());
+  int abandoned = 0;
+  for (std::size_t k = 0; k < raced.local_fits.size(); ++k) {
+    const LocalFit& r = raced.local_fits[k];
+    const LocalFit& a = all.local_fits[k];
+    EXPECT_FALSE(a.abandoned);
+    if (r.abandoned) {
+      ++abandoned;
+      EXPECT_GT(k, 0u);  // the first fit has nothing to lag behind
+      EXPECT_EQ(r.iterations, 1);
+      EXPECT_GT(r.cost, 10.0 * raced.local_fits[0].cost);
+      EXPECT_GE(a.cost, all.cost);  // run to its end, it would not have won (here one reaches the same minimum)
+      EXPECT_NE(r.stop.find("abandoned"), std::string::npos) << r.stop;
+    } else {
+      EXPECT_EQ(r.theta[0], a.theta[0]);
+      EXPECT_EQ(r.iterations, a.iterations);
+    }
+  }
+  EXPECT_GE(abandoned, 1);
+  EXPECT_LT(raced.evaluations, all.evaluations);
 }
 
 // A parameter the residuals do not depend on gets no standard error (NaN), the others keep theirs.

@@ -263,10 +263,17 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
 
 void read_optimizer(const json& j, OptimizerSettings& o) {
   const std::string p = "/optimizer";
-  f::allow_keys(j, {"design_points", "starts", "max_iterations", "xtol", "gtol", "ftol", "fd_step", "penalty", "threads", "seed"}, p);
+  f::allow_keys(j, {"design_points", "starts", "max_iterations", "abandon_factor", "abandon_after", "xtol", "gtol", "ftol",
+                     "fd_step", "penalty", "threads", "seed"}, p);
   if (j.contains("design_points")) o.design_points = static_cast<int>(f::integer(j["design_points"], p + "/design_points", 0, 1000));
   if (j.contains("starts")) o.starts = static_cast<int>(f::integer(j["starts"], p + "/starts", 1, 100));
   if (j.contains("max_iterations")) o.max_iterations = static_cast<int>(f::integer(j["max_iterations"], p + "/max_iterations", 1, 10000));
+  if (j.contains("abandon_factor"))
+    o.abandon_factor = f::number(j["abandon_factor"], p + "/abandon_factor", {0.0, 1e12}, "(0: never; otherwise at least 1)");
+  if (o.abandon_factor > 0.0 && o.abandon_factor < 1.0)
+    f::fail(p + "/abandon_factor", "must be 0 (never abandon) or at least 1 (a fit is compared with the best before it); got " +
+                                       f::shown(o.abandon_factor));
+  if (j.contains("abandon_after")) o.abandon_after = static_cast<int>(f::integer(j["abandon_after"], p + "/abandon_after", 1, 10000));
   if (j.contains("xtol")) o.xtol = f::number(j["xtol"], p + "/xtol", {0.0, 0.1, true, false});
   if (j.contains("gtol")) o.gtol = f::number(j["gtol"], p + "/gtol", {0.0, 0.1, true, false});
   if (j.contains("ftol")) o.ftol = f::number(j["ftol"], p + "/ftol", {0.0, 0.1, true, false});

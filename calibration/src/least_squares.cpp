@@ -12,6 +12,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <sstream>
 
 namespace acst::calibration {
 
@@ -85,13 +86,48 @@ struct CallbackData {
   Session* session;
 };
 
-void gsl_callback(const std::size_t iteration, void* data, const gsl_multifit_nlinear_workspace* w) {
-  const CallbackData& c = *static_cast<CallbackData*>(data);
-  if (!*c.progress) return;
+double cost_of(const gsl_multifit_nlinear_workspace* w) {
   const gsl_vector* f = gsl_multifit_nlinear_residual(w);
   double cost = 0.0;
   for (std::size_t i = 0; i < f->size; ++i) cost += gsl_vector_get(f, i) * gsl_vector_get(f, i);
-  (*c.progress)(c.phase, static_cast<int>(iteration), cost, c.session->evaluations);
+  return cost;
+}
+
+void report_progress(const CallbackData& c, std::size_t iteration, const gsl_multifit_nlinear_workspace* w) {
+  if (*c.progress) (*c.progress)(c.phase, static_cast<int>(iteration), cost_of(w), c.session->evaluations);
+}
+
+// gsl_multifit_nlinear_driver (GSL 2.7, multifit_nlinear/fdf.c) step for step, so a fit is the
+// same iterates either way, with one addition: a fit whose cost after `abandon_after` iterations
+// is still above `abandon_above` is stopped (*abandoned): a bet that a fit that far behind the
+// best after that many steps would not overtake it, which saves most of a multi-start's time.
+int drive(gsl_multifit_nlinear_workspace* w, const OptimizerSettings& o, const CallbackData& cb, double abandon_above,
+          int* info, bool* abandoned) {
+  const std::size_t max_iterations = static_cast<std::size_t>(o.max_iterations);
+  std::size_t iter = 0;
+  int status = GSL_CONTINUE;
+  *abandoned = false;
+  report_progress(cb, iter, w);
+  do {
+    status = gsl_multifit_nlinear_iterate(w);
+    if (status == GSL_ENOPROG && iter == 0) {  // not one step lowered the cost: more will not help
+      *info = status;
+      return GSL_EMAXITER;
+    }
+    ++iter;
+    report_progress(cb, iter, w);
+    status = gsl_multifit_nlinear_test(o.xtol, o.gtol, o.ftol, info, w);
+    if (status == GSL_CONTINUE && iter >= static_cast<std::size_t>(o.abandon_after) && cost_of(w) > abandon_above) {
+      *abandoned = true;
+      return GSL_SUCCESS;
+    }
+  } while (status == GSL_CONTINUE && iter < max_iterations);
+  if (status == GSL_ETOLF || status == GSL_ETOLX || status == GSL_ETOLG) {
+    *info = status;
+    status = GSL_SUCCESS;
+  }
+  if (iter >= max_iterations && status != GSL_SUCCESS) status = GSL_EMAXITER;
+  return status;
 }
 
 std::string stop_reason(int status, int info) {
@@ -101,8 +137,14 @@ std::string stop_reason(int status, int info) {
   return info == 1 ? "small step (xtol)" : info == 2 ? "small gradient (gtol)" : "converged";
 }
 
+std::string abandon_reason(double factor, int iterations) {
+  std::ostringstream s;
+  s << "abandoned: cost above " << factor << " x the best before it after " << iterations << " iterations";
+  return s.str();
+}
+
 LocalFit local_fit(const LeastSquaresProblem& problem, const BoundTransform& transform, const OptimizerSettings& o,
-                   const Eigen::VectorXd& from, const std::string& phase, const FitProgress& progress) {
+                   const Eigen::VectorXd& from, double abandon_above, const std::string& phase, const FitProgress& progress) {
   const std::size_t n = static_cast<std::size_t>(problem.residual_count), p = static_cast<std::size_t>(from.size());
   Session session(&problem, &transform, o.fd_step);
   gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
@@ -125,14 +167,16 @@ LocalFit local_fit(const LeastSquaresProblem& problem, const BoundTransform& tra
   gsl_multifit_nlinear_init(x0, &fdf, w);
   CallbackData cb{&progress, phase, &session};
   int info = 0;
-  const int status = gsl_multifit_nlinear_driver(static_cast<std::size_t>(o.max_iterations), o.xtol, o.gtol, o.ftol,
-                                                 gsl_callback, &cb, &info, w);
+  bool abandoned = false;
+  const int status = drive(w, o, cb, abandon_above, &info, &abandoned);
   const Eigen::VectorXd u = to_eigen(gsl_multifit_nlinear_position(w));
   fit.theta = transform.to_physical(u);
   fit.cost = to_eigen(gsl_multifit_nlinear_residual(w)).squaredNorm();
   fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(w));
   fit.evaluations = session.evaluations;
-  fit.stop = stop_reason(status, info);
+  fit.abandoned = abandoned;
+  fit.stop = abandoned ? abandon_reason(o.abandon_factor, fit.iterations)
+                       : stop_reason(status, info);
   gsl_vector_free(x0);
   gsl_multifit_nlinear_free(w);
   return fit;
@@ -274,7 +318,8 @@ FitResult fit(const LeastSquaresProblem& problem, const OptimizerSettings& o, co
   t0 = std::chrono::steady_clock::now();
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     const std::string phase = "fit " + std::to_string(k + 1) + "/" + std::to_string(candidates.size());
-    result.local_fits.push_back(local_fit(problem, transform, o, candidates[k], phase, progress));
+    const double abandon_above = k > 0 && o.abandon_factor > 0.0 ? o.abandon_factor * result.local_fits[result.best].cost : INFINITY;
+    result.local_fits.push_back(local_fit(problem, transform, o, candidates[k], abandon_above, phase, progress));
     result.evaluations += result.local_fits.back().evaluations;
     if (result.local_fits.back().cost < result.local_fits[result.best].cost) result.best = k;
   }

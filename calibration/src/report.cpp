@@ -190,7 +190,7 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
       to[vars[j].label] = l.theta[static_cast<Eigen::Index>(j)];
     }
     local.push_back({{"from", from}, {"start_cost", l.start_cost}, {"cost", l.cost}, {"iterations", l.iterations},
-                     {"evaluations", l.evaluations}, {"stop", l.stop}, {"result", to}});
+                     {"evaluations", l.evaluations}, {"stop", l.stop}, {"abandoned", l.abandoned}, {"result", to}});
   }
   r["multistart"] = {{"design_costs", fit.design_costs}, {"local_fits", local}, {"best", fit.best}};
   const WorkCounters& c = problem.counters();

@@ -60,6 +60,10 @@ struct OptimizerSettings {
   int design_points = 8;    // small space-filling design evaluated before the local fits
   int starts = 2;           // local trust-region fits from the best design points (the start included)
   int max_iterations = 40;  // per local fit
+  // A later local fit whose cost, after abandon_after iterations, is still above abandon_factor
+  // times the best cost of the fits before it is stopped (0: never; docs/calibration.md).
+  double abandon_factor = 0.0;
+  int abandon_after = 5;
   double xtol = 1e-5, gtol = 1e-6, ftol = 1e-7;
   double fd_step = 1e-3;    // forward-difference step in the scaled parameters
   double penalty = 10.0;    // normalised residual of every point of a failed simulation

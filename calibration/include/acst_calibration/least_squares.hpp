@@ -33,7 +33,8 @@ struct LocalFit {
   double start_cost = 0.0, cost = 0.0;  // cost = sum of squared residuals
   int iterations = 0;
   long evaluations = 0;                 // residual vectors computed
-  std::string stop;                     // why GSL stopped
+  std::string stop;                     // why GSL stopped, or why the fit was abandoned
+  bool abandoned = false;               // OptimizerSettings::abandon_factor
 };
 
 struct Uncertainty {
