@@ -2,8 +2,8 @@
 """Is the Kimura footing's peak converged in the loading rate? (docs/mpm.md, "Loading rate")
 
 Runs the Kimura V85.6 and H86.7 scenes on the symmetric half domain with one stress update per
-step (the reference study's sweep settings) at the footing speed 0.045 m/s and at 1/2 and 1/4 of
-it (H86.7 also at 1/8); V85.6 also at 2 and 4 times it, and at the study's speed with a time step 10 % shorter
+step (the reference study's sweep settings) at the footing speed 0.045 m/s and at 1/2, 1/4 and
+1/8 of it; V85.6 also at 2 and 4 times it, and at the study's speed with a time step 10 % shorter
 (cfl 0.45 instead of 0.5), a change that should not matter. Each runs to S/B 0.2 (past every
 peak). Writes:
   OUT/loading_rate.csv: per case the load at S/B 0.03, 0.06 and 0.09, the largest load and its
@@ -27,7 +27,7 @@ from footing_common import ROOT, max_kinetic_ratio, plot_beside_kimura, read_cur
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 TESTS = {"V85.6": "kimura_V85.6_alpha0_half.json", "H86.7": "kimura_H86.7_alpha90.json"}
 # (test, speed factor as numerator and denominator, cfl)
-CASES = [(t, 1, d, 0.5) for t in TESTS for d in (1, 2, 4)] + [("H86.7", 1, 8, 0.5)] + \
+CASES = [(t, 1, d, 0.5) for t in TESTS for d in (1, 2, 4, 8)] + \
         [("V85.6", f, 1, 0.5) for f in (2, 4)] + [("V85.6", 1, 1, 0.45)]
 STOP_S_OVER_B = 0.2
 MARKS = (0.03, 0.06, 0.09)  # settlements before the first peak, where the curves are compared
