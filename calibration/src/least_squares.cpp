@@ -100,7 +100,7 @@ void report_progress(const CallbackData& c, std::size_t iteration, const gsl_mul
 // gsl_multifit_nlinear_driver (GSL 2.7, multifit_nlinear/fdf.c) step for step, so a fit is the
 // same iterates either way, with one addition: a fit whose cost after `abandon_after` iterations
 // is still above `abandon_above` is stopped (*abandoned): a bet that a fit that far behind the
-// best after that many steps would not overtake it, which saves most of a multi-start's time.
+// best after that many steps would not overtake it, which saves the evaluations it would spend.
 int drive(gsl_multifit_nlinear_workspace* w, const OptimizerSettings& o, const CallbackData& cb, double abandon_above,
           int* info, bool* abandoned) {
   const std::size_t max_iterations = static_cast<std::size_t>(o.max_iterations);
