@@ -54,6 +54,14 @@ def rms_difference_pct(curve, ref_curve, upto, q_scale):
     return round(100.0 * math.sqrt(sum(v * v for v in d) / len(d)) / q_scale, 2)
 
 
+def write_table(path, fields, rows):
+    """A CSV of the columns FIELDS of dict rows (other keys, e.g. curves, left out)."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(rows)
+
+
 def plot_beside_kimura(png, panels, stop_s_over_b):
     """One panel per Kimura test, {test: (title, [(load record, label), ...])}, each with the
     test's measured curve (data/lab/kimura_1985/TEST.csv)."""

@@ -16,13 +16,12 @@ processes with --only (each process one case at a time).
 
   python3 bench/footing_loading_rate.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
-import csv
 import json
 import os
 import subprocess
 import sys
 
-from footing_common import ROOT, max_kinetic_ratio, plot_beside_kimura, read_curve, rms_difference_pct, study_arguments, value_at
+from footing_common import ROOT, max_kinetic_ratio, plot_beside_kimura, read_curve, rms_difference_pct, study_arguments, value_at, write_table
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 TESTS = {"V85.6": "kimura_V85.6_alpha0_half.json", "H86.7": "kimura_H86.7_alpha90.json"}
@@ -126,10 +125,7 @@ def main():
               f"{r['rms_to_0.2_pct']} % to 0.2")
     fields = ["case", "test", "speed_m_per_s", "cfl"] + [f"q_at_{m}_kPa" for m in MARKS] + \
              ["q_max_kPa", "S_at_max_over_B", "q_first_peak_kPa", "S_first_peak_over_B", "rms_to_0.09_pct", "rms_to_0.2_pct", "max_kinetic_ratio", "steps", "wall_s", "threads"]
-    with open(os.path.join(a.out, "loading_rate.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
-        w.writeheader()
-        w.writerows(table)
+    write_table(os.path.join(a.out, "loading_rate.csv"), fields, table)
     plot_beside_kimura(os.path.join(a.out, "loading_rate.png"),
                        {test: (f"Kimura {test}, cell 0.09 m, half domain: footing speed",
                                [(r["record"], "%g m/s, cfl %g" % (r["speed_m_per_s"], r["cfl"])) for r in table if r["test"] == test])

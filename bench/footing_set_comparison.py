@@ -13,11 +13,10 @@ A case whose summary.json exists is reused; --only picks cases (one process, one
 
   python3 bench/footing_set_comparison.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
-import csv
 import os
 import sys
 
-from footing_common import ROOT, plot_beside_kimura, rms_difference_pct, study_arguments
+from footing_common import ROOT, plot_beside_kimura, rms_difference_pct, study_arguments, write_table
 from footing_loading_rate import MARKS, STOP_S_OVER_B, TESTS, run_case, scene_for
 
 SETS = {"delivered": "toyoura_acst_calibrated", "li2002": "toyoura_acst_li2002_calibrated"}
@@ -58,10 +57,7 @@ def main():
     fields = ["case", "test", "set"] + [f"q_at_{m}_kPa" for m in MARKS] + \
              ["q_first_peak_kPa", "S_first_peak_over_B", "q_max_kPa", "S_at_max_over_B", "rms_to_0.09_pct", "rms_to_0.2_pct",
               "max_kinetic_ratio", "steps", "wall_s", "threads"]
-    with open(os.path.join(a.out, "set_comparison.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
-        w.writeheader()
-        w.writerows(table)
+    write_table(os.path.join(a.out, "set_comparison.csv"), fields, table)
     plot_beside_kimura(os.path.join(a.out, "set_comparison.png"),
                        {test: (f"Kimura {test}, cell 0.09 m, half domain, 0.045 m/s: parameter set",
                                [(r["record"], r["set"]) for r in table if r["test"] == test]) for test in TESTS}, STOP_S_OVER_B)

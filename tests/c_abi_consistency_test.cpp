@@ -276,37 +276,51 @@ TEST(CAbiConsistency, Umat3DMatchesCppApiWithColumnMajorDdsdde) {
 
 // Plane strain, NTENS = 4 (11 22 33 12): eps_33 = eps_13 = eps_23 = 0 and a deposition direction
 // in the 1-2 plane, so the C++ run keeps sigma_13 = sigma_23 = 0 and the 4 components must agree.
-TEST(CAbiConsistency, UmatPlaneStrainMatchesCppApi) {
-  const std::string text = acst::test::read_text(guide_path);
-  const acst::Material mat = acst::test::guide_material();
-  const std::vector<double> props = props_from_json(text);
+struct PlaneStrainPoint {
+  double stress[4];
+  double statev[ACST_NSTATV];
+};
+
+// umat_ with PROPS `props` (NTENS 4) on a plane-strain path (vertical compression and simple
+// shear, bedding tilted by 30 degrees in the footing frame) gives the stress, void ratio and
+// tangent of the material of the JSON `text` through the C++ API; returns the point's last state.
+PlaneStrainPoint expect_umat_plane_strain_matches(const std::string& text, const std::vector<double>& props) {
+  const acst::Material mat = acst::Material::from_json(text);
   ModelHandle h(text);
-  const Eigen::Vector3d b3(-0.5, 0.866, 0.0);  // bedding tilted by 30 degrees, footing frame
+  PlaneStrainPoint pt{};
+  const Eigen::Vector3d b3(-0.5, 0.866, 0.0);
   State ref = mat.initial_state(acst::test::isotropic_stress(p0), e0, b3);
-  double stress6[6], statev[ACST_NSTATV];
+  double stress6[6];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {-0.5, 0.866, 0.0};
-  ASSERT_EQ(acst_initial_state(statev, stress6, h.model, s0, e0, b).code, ACST_OK);
-  double stress[4] = {stress6[0], stress6[1], stress6[2], stress6[3]};
-  const Sym inc = (Sym() << -3e-5, 1e-4, 0.0, 3e-5, 0.0, 0.0).finished();  // vertical compression + simple shear
+  EXPECT_EQ(acst_initial_state(pt.statev, stress6, h.model, s0, e0, b).code, ACST_OK);
+  std::copy(stress6, stress6 + 4, pt.stress);
+  const Sym inc = (Sym() << -3e-5, 1e-4, 0.0, 3e-5, 0.0, 0.0).finished();
   const std::vector<double> d6 = to_abi_strain(inc);
   const double d[4] = {d6[0], d6[1], d6[2], d6[3]};
   UmatCall umat;
   for (int step = 0; step < path_steps; ++step) {
     Mat6 D;
-    ASSERT_EQ(mat.update(ref, inc, &D).status, acst::integration::Status::ok);
-    ASSERT_EQ(ref.stress[4], 0.0);
-    ASSERT_EQ(ref.stress[5], 0.0);
-    umat(stress, statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
-    ASSERT_EQ(umat.pnewdt, 1.0) << "step " << step;
+    EXPECT_EQ(mat.update(ref, inc, &D).status, acst::integration::Status::ok);
+    EXPECT_EQ(ref.stress[4], 0.0);
+    EXPECT_EQ(ref.stress[5], 0.0);
+    umat(pt.stress, pt.statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+    EXPECT_EQ(umat.pnewdt, 1.0) << "step " << step;
     const std::string where = "plane strain step " + std::to_string(step);
     const double scale = max_abs(ref.stress), tscale = D.cwiseAbs().maxCoeff();
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(stress[i], -ref.stress[i], tight * scale) << where << ", " << i;
-    EXPECT_NEAR(statev[state_index(h.model, "void_ratio")], ref.void_ratio, tight) << where;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(pt.stress[i], -ref.stress[i], tight * scale) << where << ", " << i;
+    EXPECT_NEAR(pt.statev[state_index(h.model, "void_ratio")], ref.void_ratio, tight) << where;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)  // 4 x 4, column-major with leading dimension NTENS
-        ASSERT_NEAR(umat.ddsdde[i + 4 * j], expected_abi_tangent(D, i, j), tight * tscale) << where << " (" << i << "," << j << ")";
+        EXPECT_NEAR(umat.ddsdde[i + 4 * j], expected_abi_tangent(D, i, j), tight * tscale) << where << " (" << i << "," << j << ")";
+    if (::testing::Test::HasFailure()) break;
   }
-  EXPECT_LT(stress[3], -1.0) << "the simple shear builds a shear stress of the strain's sign (tension positive)";
+  return pt;
+}
+
+TEST(CAbiConsistency, UmatPlaneStrainMatchesCppApi) {
+  const std::string text = acst::test::read_text(guide_path);
+  const PlaneStrainPoint pt = expect_umat_plane_strain_matches(text, props_from_json(text));
+  EXPECT_LT(pt.stress[3], -1.0) << "the simple shear builds a shear stress of the strain's sign (tension positive)";
 }
 
 // PROPS(23) carries the Lode form: with 1 umat_ is the material whose JSON says "lode_form": 1
@@ -341,6 +355,21 @@ TEST(CAbiConsistency, UmatLodeFormFromProps23MatchesTheJsonMaterial) {
   props.back() = 0.5;
   umat(stress, statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
   EXPECT_LT(umat.pnewdt, 1.0) << "PROPS(23) = 0.5 is neither form";
+}
+
+// PROPS(24) carries elastic_anisotropy: with 1.5 umat_ is the material whose JSON says so
+// (stress and tangent on the plane-strain path above), and 6 is refused.
+TEST(CAbiConsistency, UmatElasticAnisotropyFromProps24MatchesTheJsonMaterial) {
+  nlohmann::json j = nlohmann::json::parse(acst::test::read_text(guide_path));
+  std::vector<double> props = props_from_json(j.dump());
+  props.insert(props.end(), {0.0, 0.0, 0.0, 1.5});  // PROPS(21..23) defaults, PROPS(24) a
+  j["parameters"]["elastic_anisotropy"] = 1.5;
+  PlaneStrainPoint pt = expect_umat_plane_strain_matches(j.dump(), props);
+  props.back() = 6.0;
+  const double d[4] = {1e-5, -1e-5, 0.0, 0.0};
+  UmatCall umat;
+  umat(pt.stress, pt.statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
+  EXPECT_LT(umat.pnewdt, 1.0) << "PROPS(24) = 6 is out of range";
 }
 
 // A failing increment asks for a smaller step and leaves stress and state as they were.

@@ -202,7 +202,7 @@ TEST_F(HardPaths, ElasticIncrementMeetsTolerance) {
     double p = mean_stress(start.stress), e = start.void_ratio;
     const int steps = 10000;
     const double h = ev / steps;
-    auto dp = [&](double pp, double ee) { return elastic_moduli(prm, ee, pp).K * h; };
+    auto dp = [&](double pp, double ee) { return isotropic_elastic_moduli(prm, ee, pp).K * h; };
     auto de = [&](double ee) { return -(1.0 + ee) * h; };
     for (int k = 0; k < steps; ++k) {
       const double p1 = dp(p, e), e1 = de(e);

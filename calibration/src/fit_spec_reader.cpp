@@ -33,14 +33,19 @@ std::string list(const char* const* begin, const char* const* end) {
   return s;
 }
 
+// The constants a fit may vary: the sand's, and the option elastic_anisotropy; not the density
+// bounds (they define Dr), the guards or the discrete lode_form.
+constexpr const char* fittable_names[] = {"G0", "nu", "Mc", "c",   "e_Gamma", "lambda_c", "xi", "d1",
+                                          "m",  "h1", "h2", "n",   "e_A",     "F0",       "k_f", "elastic_anisotropy"};
+
 // Checks one parameter value against the material's ranges, the other constants as in the base.
-void check_in_range(const Parameters& base, int index, double value, const std::string& path) {
+void check_in_range(const Parameters& base, const ParameterInfo& info, double value, const std::string& path) {
   Parameters p = base;
-  parameter_by_index(p, index) = value;
+  p.*info.member = value;
   try {
     validate(p);
   } catch (const ParameterRangeError& e) {
-    if (e.parameter == parameter_names[index]) f::fail(path, e.what());
+    if (e.parameter == info.name) f::fail(path, e.what());
   } catch (const InputError& e) {
     f::fail(path, e.what());
   }
@@ -48,14 +53,12 @@ void check_in_range(const Parameters& base, int index, double value, const std::
 
 FittedParameter read_parameter(const std::string& name, const json& j, const std::string& path,
                                const Parameters& base) {
-  const auto* begin = std::begin(parameter_names);
-  const auto* end = std::end(parameter_names);
-  const auto found = std::find_if(begin, end, [&](const char* n) { return name == n; });
-  if (found == end || name == "e_max" || name == "e_min" || name == "p_min")
-    f::fail(path, "unknown or unfittable parameter '" + name +
-                      "' (fittable: G0, nu, Mc, c, e_Gamma, lambda_c, xi, d1, m, h1, h2, n, e_A, F0, k_f)");
-  const int index = static_cast<int>(found - begin);
-  if (base.variant == Variant::isotropic && (name == "F0" || name == "e_A" || name == "k_f"))
+  const auto* begin = std::begin(fittable_names);
+  const auto* end = std::end(fittable_names);
+  if (std::find_if(begin, end, [&](const char* n) { return name == n; }) == end)
+    f::fail(path, "unknown or unfittable parameter '" + name + "' (fittable: " + list(begin, end) + ")");
+  const ParameterInfo& info = *parameter_info(name);
+  if (base.variant == Variant::isotropic && info.fabric)
     f::fail(path, "the isotropic model has no fabric: '" + name + "' cannot be fitted (use \"model\": \"ACST\")");
   f::allow_keys(j, {"start", "bounds", "per_group", "group_start"}, path);
   FittedParameter p;
@@ -66,11 +69,11 @@ FittedParameter read_parameter(const std::string& name, const json& j, const std
   p.lower = b[0];
   p.upper = b[1];
   if (!(p.lower < p.upper)) f::fail(path + "/bounds", "the lower bound " + f::shown(p.lower) + " must be below the upper bound " + f::shown(p.upper));
-  check_in_range(base, index, p.lower, path + "/bounds/0");
-  check_in_range(base, index, p.upper, path + "/bounds/1");
+  check_in_range(base, info, p.lower, path + "/bounds/0");
+  check_in_range(base, info, p.upper, path + "/bounds/1");
   const f::Range inside{p.lower, p.upper, true, true};
   p.start = j.contains("start") ? f::number(j["start"], path + "/start", inside)
-                                : parameter_by_index(base, index);
+                                : base.*info.member;
   if (!inside.contains(p.start))
     f::fail(path + "/start", "the material's value " + f::shown(p.start) + " is not strictly inside the bounds " +
                                  inside.text() + "; give a start");

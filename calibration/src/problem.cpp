@@ -41,12 +41,6 @@ double friction_angle_deg(const Sym& stress) {
 
 namespace {
 
-int parameter_index(const std::string& name) {
-  for (int i = 0; i < parameter_count; ++i)
-    if (name == parameter_names[i]) return i;
-  return -1;
-}
-
 // Increments of a run to `to_pct` in steps of `step_pct`, counted in double before it becomes an
 // int: a lab curve's strains are not bounded by the description.
 int run_increments(double to_pct, double step_pct, const ExperimentSpec& x) {
@@ -239,7 +233,7 @@ Parameters Problem::parameters(const Eigen::VectorXd& theta, const std::string& 
   Parameters p = base_;
   for (std::size_t i = 0; i < variables_.size(); ++i)
     if (variables_[i].group.empty() || variables_[i].group == group)
-      parameter_by_index(p, parameter_index(variables_[i].parameter)) = theta[static_cast<Eigen::Index>(i)];
+      p.*parameter_info(variables_[i].parameter)->member = theta[static_cast<Eigen::Index>(i)];
   return p;
 }
 

@@ -122,9 +122,7 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
 json fitted_material(const Problem& problem, const Eigen::VectorXd& theta, const std::string& group) {
   json m = problem.spec().material;
   const Parameters p = problem.parameters(theta, group);
-  for (const Variable& v : problem.variables())
-    for (int i = 0; i < parameter_count; ++i)
-      if (v.parameter == parameter_names[i]) m["parameters"][v.parameter] = parameter_by_index(p, i);
+  for (const Variable& v : problem.variables()) m["parameters"][v.parameter] = p.*parameter_info(v.parameter)->member;
   return m;
 }
 

@@ -88,19 +88,23 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
   return rep;
 }
 
-// D_ep = D_e - (2G n + sqrt(2/3) K D I) (x) (2G n - K (n:r) I) / [Kp + 2G - sqrt(2/3) K D (n:r)].
+// D_ep = D_e - (D_e : m) (x) (D_e : g) / [Kp + (D_e : g):m] (docs/model.md sections 6 and 7; with
+// isotropic D_e, (2G n + sqrt(2/3) K D I) (x) (2G n - K (n:r) I) / [Kp + 2G - sqrt(2/3) K D (n:r)]).
 Mat6 Material::tangent(const State& s, bool plastic, const Sym& strain_direction) const {
   const PlasticQuantities q = plastic_quantities(parameters_, s.stress, s.fabric, s.void_ratio, strain_direction);
   Mat6 D = elastic_stiffness(q.moduli);
   if (!plastic) return D;
-  const double G = q.moduli.G, K = q.moduli.K;
-  const LoadingIndexTerms L = loading_index_terms(G, K, q.Kp, q.D, q.ratio.n, q.n_r, strain_direction);
+  const LoadingIndexTerms L = loading_index_terms(q.moduli, q.Kp, q.D, q.ratio.n, q.n_r, strain_direction);
   // Only a loading direction contributes; at a non-positive denominator keep the elastic part.
   if (L.denominator > 0.0 && L.numerator > 0.0) {
-    const Sym b = 2.0 * G * q.ratio.n - K * q.n_r * identity_tensor();  // L = b:d_eps / denominator
+    const Sym b = loading_index_gradient(q.moduli, q.ratio.n, q.n_r);  // L = b:d_eps / denominator
     D -= plastic_stress_direction(q) * contraction_row(b) / L.denominator;
   }
   return D;
+}
+
+ElasticModuli Material::elastic_moduli(const State& s) const {
+  return acst::elastic_moduli(parameters_, s.void_ratio, mean_stress(s.stress), s.fabric);
 }
 
 Diagnostics Material::diagnostics(const State& s, const Sym& strain_direction) const {

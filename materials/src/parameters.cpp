@@ -48,7 +48,9 @@ void validate(const Parameters& p) {
   if (p.variant == Variant::isotropic)
     for (const ParameterInfo& info : parameter_table)
       if (info.fabric && p.*info.member != 0.0)
-        throw InputError("the isotropic model has no fabric: parameters 'F0', 'e_A' and 'k_f' must be 0 or absent");
+        throw ParameterRangeError("the isotropic model has no fabric: parameter '" + std::string(info.name) +
+                                      "' must be 0 or absent",
+                                  info.name);
 }
 
 double& parameter_by_index(Parameters& p, int i) {
@@ -65,7 +67,9 @@ std::string parameter_table_markdown() {
   for (const ParameterInfo& info : parameter_table) {
     os << "| `" << info.name << "` | " << range_text(info.lo, info.lo_open, info.hi, info.hi_open) << " | "
        << info.unit << " | " << info.meaning << " | "
-       << (info.fabric ? "required (isotropic: 0 or absent)" : info.optional ? "optional" : "required") << " | ";
+       << (info.optional ? (info.fabric ? "optional (isotropic: 0 or absent)" : "optional")
+                         : (info.fabric ? "required (isotropic: 0 or absent)" : "required"))
+       << " | ";
     if (info.props) os << ++prop;
     os << " |\n";
   }

@@ -14,7 +14,7 @@
 namespace acst::calibration {
 
 struct FittedParameter {
-  std::string name;   // a material constant (acst::parameter_names)
+  std::string name;   // a material constant (a row of acst::parameter_table)
   std::string path;   // JSON path, for messages
   double start = 0.0, lower = 0.0, upper = 0.0;
   bool per_group = false;                // one value per group of experiments

@@ -62,8 +62,7 @@ class SandKind final : public ModelKind {
   }
 
   ElasticModuli moduli(const double* stress, const double* statev) const override {
-    const Diagnostics d = material_.diagnostics(state_of(stress, statev));
-    return {d.G, d.K};
+    return material_.elastic_moduli(state_of(stress, statev));
   }
 
   void diagnostics(double* out, const double* stress, const double* statev) const override {

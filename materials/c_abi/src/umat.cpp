@@ -47,6 +47,7 @@ acst::Material material_from_props(const double* props, int nprops) {
   acst::Parameters p;
   for (int i = 0; i < acst::parameter_count; ++i) acst::parameter_by_index(p, i) = props[i];
   if (nprops > 22) p.lode_form = props[22];  // checked with the others (0 or 1)
+  if (nprops > 23) p.elastic_anisotropy = props[23];  // checked with the others ([-5, 5])
   acst::integration::Options o;
   if (nprops > 18) {
     const int code = static_cast<int>(props[18]);
@@ -98,7 +99,7 @@ void write_fallback_tangent(double* ddsdde, int nt, const double* stress, const 
     double mean = 0.0;
     for (int i = 0; i < 3 && stress; ++i) mean -= stress[i] / 3.0;  // tension positive here
     const double p_min = std::isfinite(p.p_min) && p.p_min > 0.0 ? p.p_min : 1.0;
-    const acst::ElasticModuli m = acst::elastic_moduli(p, e, std::isfinite(mean) ? std::max(mean, p_min) : p_min);
+    const acst::ElasticModuli m = acst::isotropic_elastic_moduli(p, e, std::isfinite(mean) ? std::max(mean, p_min) : p_min);
     if (std::isfinite(m.G) && std::isfinite(m.K) && m.G > 0.0 && m.K > 0.0) mod = m;
   }
   double tangent[36];

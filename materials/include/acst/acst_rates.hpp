@@ -39,7 +39,10 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   q.p = mean_stress(sigma);
   q.ratio = ratio;
   const double g = q.ratio.lode.g;
-  q.moduli = elastic_moduli(prm, e, q.p);
+  // Set in place: a copy of the moduli would copy P, unset on the isotropic path, every time.
+  q.moduli.G = shear_modulus(prm, e, q.p);
+  q.moduli.K = bulk_modulus(q.moduli.G, prm.nu);
+  if (prm.elastic_anisotropy != 0.0) set_fabric_stretch(q.moduli, prm.elastic_anisotropy, F);
   q.psi = state_parameter(prm, e, q.p);
   q.A = fabric_anisotropy_variable(F, q.ratio.n);
   q.zeta = dilatancy_state_parameter(q.psi, prm.e_A, q.A);
@@ -58,10 +61,11 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, lode_shape(prm), prm.R_tolerance, strain_direction));
 }
 
-// D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I) = 2G n + sqrt(2/3) K D I: the stress relaxed per
-// unit loading index
+// D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I), isotropic 2G n + sqrt(2/3) K D I: the stress
+// relaxed per unit loading index
 // (n is deviatoric, so the deviatoric and volumetric parts separate without a deviator call.)
 inline Sym plastic_stress_direction(const PlasticQuantities& q) {
+  if (q.moduli.anisotropic) return elastic_stress_increment(q.moduli, plastic_flow_direction(q.ratio.n, q.D));
   Sym a = 2.0 * q.moduli.G * q.ratio.n;
   const double volumetric = std::sqrt(2.0 / 3.0) * q.moduli.K * q.D;
   a[0] += volumetric;
@@ -87,12 +91,18 @@ class AcstRates {
   void elastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters& c) const {
     ++c.rate_evaluations;
     const double e = void_ratio(y);
-    dy.template head<6>() = elastic_stress_increment(elastic_moduli(prm_, e, mean_stress(stress(y))), deps);
+    const double p = mean_stress(stress(y));
+    if (prm_.elastic_anisotropy == 0.0) {  // the published model: no fabric read, no P built
+      const double G = shear_modulus(prm_, e, p);
+      dy.template head<6>() = isotropic_stress_increment(G, bulk_modulus(G, prm_.nu), deps);
+    } else {
+      dy.template head<6>() = elastic_stress_increment(elastic_moduli(prm_, e, p, fabric(y)), deps);
+    }
     dy.template segment<6>(6).setZero();
     dy[12] = -(1.0 + e) * trace(deps);  // de = -(1 + e) d eps_v
   }
 
-  // d sigma = 2G de_dev + K d eps_v I - <L>(2G n + sqrt(2/3) K D I);  dF = <L> k_f (n - F).
+  // d sigma = D_e d eps - <L> D_e:(n + sqrt(2/27) D I);  dF = <L> k_f (n - F).
   Reason plastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters& c) const {
     ++c.rate_evaluations;
     const Sym sigma = stress(y), F = fabric(y);
@@ -103,7 +113,7 @@ class AcstRates {
     }
     const PlasticQuantities q = plastic_quantities(prm_, sigma, F, e, ratio_state(sigma, deps));
     count_guards(q, c);
-    const LoadingIndexTerms L = loading_index_terms(q.moduli.G, q.moduli.K, q.Kp, q.D, q.ratio.n, q.n_r, deps);
+    const LoadingIndexTerms L = loading_index_terms(q.moduli, q.Kp, q.D, q.ratio.n, q.n_r, deps);
     if (!(L.denominator > 0.0)) {
       ++c.guard_uniqueness;
       return Reason::loss_of_uniqueness;

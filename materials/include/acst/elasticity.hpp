@@ -1,5 +1,7 @@
 #pragma once
-// Pressure-dependent hypoelasticity (docs/model.md section 2).
+// Pressure-dependent hypoelasticity, isotropic or cross-anisotropic from the fabric
+// (docs/model.md section 2).
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 
@@ -8,9 +10,15 @@
 
 namespace acst {
 
+// D_e : eps = P (D_iso : (P eps P)) P, with D_iso the isotropic stiffness of G and K and P = I
+// unless the option elastic_anisotropy is on. A congruence of D_iso: symmetric and positive
+// definite whenever D_iso is.
 struct ElasticModuli {
-  double G;  // shear modulus, kPa
-  double K;  // bulk modulus, kPa
+  double G;  // shear modulus (of D_iso), kPa
+  double K;  // bulk modulus (of D_iso), kPa
+  bool anisotropic = false;
+  Eigen::Matrix3d P{};  // read only when anisotropic ({} leaves it unset: the hot isotropic path)
+  double P_max = 1.0;  // largest eigenvalue of P
 };
 
 // G = G0 pa (2.97 - e)^2 / (1 + e) sqrt(p/pa), evaluated at max(p, p_min) (2.97: void_ratio_limit).
@@ -23,24 +31,51 @@ inline double shear_modulus(const Parameters& prm, double e, double p) {
 // K = G 2(1 + nu) / (3(1 - 2nu)).
 inline double bulk_modulus(double G, double nu) { return G * 2.0 * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu)); }
 
-inline ElasticModuli elastic_moduli(const Parameters& prm, double e, double p) {
+// P = exp(a sqrt(6)/12 F). For a fabric F = |F| (3 b b^T - I)/sqrt(6) the stiffness is Graham &
+// Houlsby's (1983) cross-anisotropy about b, with Young's modulus along b exp(a |F|) times the
+// one across it; det P = 1 (F is deviatoric), so a scales no volume. Sets P, P_max and
+// anisotropic. Out of line (src/elasticity.cpp): the eigensolver is large code.
+void set_fabric_stretch(ElasticModuli& mod, double a, const Sym& F);
+
+// The moduli at (e, p) and, with elastic_anisotropy, the fabric F.
+inline ElasticModuli elastic_moduli(const Parameters& prm, double e, double p, const Sym& F) {
+  const double G = shear_modulus(prm, e, p);
+  ElasticModuli mod{G, bulk_modulus(G, prm.nu)};
+  if (prm.elastic_anisotropy != 0.0) set_fabric_stretch(mod, prm.elastic_anisotropy, F);
+  return mod;
+}
+
+// The isotropic moduli (no fabric at hand: nominal tangents).
+inline ElasticModuli isotropic_elastic_moduli(const Parameters& prm, double e, double p) {
   const double G = shear_modulus(prm, e, p);
   return {G, bulk_modulus(G, prm.nu)};
 }
 
 // d sigma = 2G de_dev + K d eps_v I.
-inline Sym elastic_stress_increment(const ElasticModuli& mod, const Sym& deps) {
+inline Sym isotropic_stress_increment(double G, double K, const Sym& deps) {
   const double dev_v = trace(deps);
-  Sym ds = 2.0 * mod.G * deviator(deps);
-  ds[0] += mod.K * dev_v;
-  ds[1] += mod.K * dev_v;
-  ds[2] += mod.K * dev_v;
+  Sym ds = 2.0 * G * deviator(deps);
+  ds[0] += K * dev_v;
+  ds[1] += K * dev_v;
+  ds[2] += K * dev_v;
   return ds;
+}
+
+// d sigma = D_e : d eps.
+inline Sym elastic_stress_increment(const ElasticModuli& mod, const Sym& deps) {
+  if (!mod.anisotropic) return isotropic_stress_increment(mod.G, mod.K, deps);
+  const Eigen::Matrix3d& P = mod.P;
+  const Sym inner = isotropic_stress_increment(mod.G, mod.K, from_matrix(P * to_matrix(deps) * P));
+  return from_matrix(P * to_matrix(inner) * P);
 }
 
 // The elastic stiffness as a matrix acting on Voigt strain with tensor shear components.
 inline Mat6 elastic_stiffness(const ElasticModuli& mod) {
   Mat6 D = Mat6::Zero();
+  if (mod.anisotropic) {
+    for (int j = 0; j < 6; ++j) D.col(j) = elastic_stress_increment(mod, Sym::Unit(j));
+    return D;
+  }
   const double lam = mod.K - 2.0 * mod.G / 3.0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) D(i, j) = lam;
@@ -50,7 +85,12 @@ inline Mat6 elastic_stiffness(const ElasticModuli& mod) {
   return D;
 }
 
-// Constrained (P-wave) modulus K + 4G/3, for explicit time steps.
-inline double constrained_modulus(const ElasticModuli& mod) { return mod.K + 4.0 * mod.G / 3.0; }
+// The largest P-wave modulus over all directions, for explicit time steps: K + 4G/3 when
+// isotropic; with P, (Pv)(x)(Pn) bounds the strain of a wave along n polarised along v, so
+// (K + 4G/3) P_max^4 bounds it (nu >= 0), reached along P's major axis.
+inline double constrained_modulus(const ElasticModuli& mod) {
+  const double p2 = mod.P_max * mod.P_max;
+  return (mod.K + 4.0 * mod.G / 3.0) * p2 * p2;
+}
 
 }  // namespace acst

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "acst/elasticity.hpp"
 #include "acst/integration/options.hpp"
 #include "acst/integration/report.hpp"
 #include "acst/parameters.hpp"
@@ -46,6 +47,9 @@ class Material {
   Mat6 tangent(const State& state, bool plastic, const Sym& strain_direction) const;
 
   Diagnostics diagnostics(const State& state, const Sym& strain_direction = Sym::Zero()) const;
+
+  // The elastic stiffness of a state (p at least p_min), for wave speeds and tangents.
+  ElasticModuli elastic_moduli(const State& state) const;
 
   const Parameters& parameters() const { return parameters_; }
   const integration::Options& options() const { return options_; }

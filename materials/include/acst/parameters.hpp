@@ -50,6 +50,8 @@ struct Parameters {
   double R_tolerance = 1e-9;  // below this R the loading direction is taken from the strain increment
   // Lode interpolation (docs/model.md section 1): 0 Li (2002), 1 Willam & Warnke (1975).
   double lode_form = 0.0;
+  // Fabric-dependent cross-anisotropic elasticity (docs/model.md section 2): 0 isotropic.
+  double elastic_anisotropy = 0.0;
 
   Variant variant = Variant::anisotropic;
 };
@@ -105,9 +107,18 @@ inline constexpr ParameterInfo parameter_table[] = {
      "below it n follows the strain increment (1e-9)"},
     {"lode_form", &Parameters::lode_form, 0, 1, false, false, "-", false, true, false,
      "g(theta): 0 Li (2002), 1 Willam & Warnke (1975) (0)"},
+    {"elastic_anisotropy", &Parameters::elastic_anisotropy, -5, 5, false, false, "-", true, true, false,
+     "a: Young's modulus along F's major axis exp(a |F|) times across it (0)"},
 };
 
 inline constexpr int parameter_table_size = sizeof parameter_table / sizeof parameter_table[0];
+
+// The table's row of a parameter name (any row, PROPS entry or not); nullptr when there is none.
+inline const ParameterInfo* parameter_info(const std::string& name) {
+  for (const ParameterInfo& info : parameter_table)
+    if (name == info.name) return &info;
+  return nullptr;
+}
 
 constexpr int count_props() {
   int k = 0;
