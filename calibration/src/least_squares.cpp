@@ -139,7 +139,8 @@ std::string stop_reason(int status, int info) {
 
 std::string abandon_reason(double factor, int iterations) {
   std::ostringstream s;
-  s << "abandoned: cost above " << factor << " x the best before it after " << iterations << " iterations";
+  s << "abandoned: cost above " << factor << " x the best before it after " << iterations
+    << (iterations == 1 ? " iteration" : " iterations");
   return s.str();
 }
 
