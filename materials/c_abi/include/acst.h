@@ -125,7 +125,9 @@ acst_status acst_update_batch(double* stress, size_t stress_stride, double* stat
                               const double* dstrain, size_t dstrain_stride);
 
 /* P-wave speed sqrt((K + 4G/3)/rho) in m/s from the current elastic stiffness (from E and nu for
- * the verification kinds), for explicit time steps; density in kg/m^3. */
+ * the verification kinds), for explicit time steps; density in kg/m^3. With the option
+ * elastic_anisotropy, the fastest direction's bound sqrt((K + 4G/3) P_max^4 / rho)
+ * (docs/model.md section 2). */
 acst_status acst_wave_speed(double* speed, const acst_model* model, const double* stress, const double* statev,
                             double density);
 
