@@ -39,10 +39,7 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   q.p = mean_stress(sigma);
   q.ratio = ratio;
   const double g = q.ratio.lode.g;
-  // Set in place: a copy of the moduli would copy P, unset on the isotropic path, every time.
-  q.moduli.G = shear_modulus(prm, e, q.p);
-  q.moduli.K = bulk_modulus(q.moduli.G, prm.nu);
-  if (prm.elastic_anisotropy != 0.0) set_fabric_stretch(q.moduli, prm.elastic_anisotropy, F);
+  set_elastic_moduli(q.moduli, prm, e, q.p, F);
   q.psi = state_parameter(prm, e, q.p);
   q.A = fabric_anisotropy_variable(F, q.ratio.n);
   q.zeta = dilatancy_state_parameter(q.psi, prm.e_A, q.A);

@@ -37,11 +37,17 @@ inline double bulk_modulus(double G, double nu) { return G * 2.0 * (1.0 + nu) / 
 // anisotropic. Out of line (src/elasticity.cpp): the eigensolver is large code.
 void set_fabric_stretch(ElasticModuli& mod, double a, const Sym& F);
 
-// The moduli at (e, p) and, with elastic_anisotropy, the fabric F.
-inline ElasticModuli elastic_moduli(const Parameters& prm, double e, double p, const Sym& F) {
-  const double G = shear_modulus(prm, e, p);
-  ElasticModuli mod{G, bulk_modulus(G, prm.nu)};
+// Sets the moduli at (e, p) and, with elastic_anisotropy, the fabric F, in place: a copy of the
+// moduli would copy P, unset on the isotropic path (the plastic quantities set theirs this way).
+inline void set_elastic_moduli(ElasticModuli& mod, const Parameters& prm, double e, double p, const Sym& F) {
+  mod.G = shear_modulus(prm, e, p);
+  mod.K = bulk_modulus(mod.G, prm.nu);
   if (prm.elastic_anisotropy != 0.0) set_fabric_stretch(mod, prm.elastic_anisotropy, F);
+}
+
+inline ElasticModuli elastic_moduli(const Parameters& prm, double e, double p, const Sym& F) {
+  ElasticModuli mod;
+  set_elastic_moduli(mod, prm, e, p, F);
   return mod;
 }
 

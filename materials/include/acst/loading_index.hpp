@@ -13,23 +13,12 @@ struct LoadingIndexTerms {
 };
 
 // m = n + sqrt(2/27) D I: the plastic strain per unit loading index (docs/model.md section 6).
-inline Sym plastic_flow_direction(const Sym& n, double D) {
-  Sym m = n;
-  const double v = std::sqrt(2.0 / 27.0) * D;
-  m[0] += v;
-  m[1] += v;
-  m[2] += v;
-  return m;
-}
+inline Sym plastic_flow_direction(const Sym& n, double D) { return n + std::sqrt(2.0 / 27.0) * D * identity_tensor(); }
 
 // D_e : g with g = n - (n:r)/3 I, the direction of df/dsigma: L = (D_e : g):d eps / denominator.
 inline Sym loading_index_gradient(const ElasticModuli& mod, const Sym& n, double n_r) {
   if (!mod.anisotropic) return 2.0 * mod.G * n - mod.K * n_r * identity_tensor();
-  Sym g = n;
-  g[0] -= n_r / 3.0;
-  g[1] -= n_r / 3.0;
-  g[2] -= n_r / 3.0;
-  return elastic_stress_increment(mod, g);
+  return elastic_stress_increment(mod, n - n_r / 3.0 * identity_tensor());
 }
 
 // L = [2G n:de_dev - K (n:r) d eps_v] / [Kp + 2G - sqrt(2/3) K D (n:r)] with isotropic D_e;
