@@ -357,19 +357,31 @@ TEST(CAbiConsistency, UmatLodeFormFromProps23MatchesTheJsonMaterial) {
   EXPECT_LT(umat.pnewdt, 1.0) << "PROPS(23) = 0.5 is neither form";
 }
 
-// PROPS(24) carries elastic_anisotropy: with 1.5 umat_ is the material whose JSON says so
-// (stress and tangent on the plane-strain path above), and 6 is refused.
-TEST(CAbiConsistency, UmatElasticAnisotropyFromProps24MatchesTheJsonMaterial) {
+// An optional option entry at PROPS(position) (1-based; the entries before it at their defaults,
+// 0): with `value` umat_ is the material whose JSON sets `name` so (stress and tangent on the
+// plane-strain path above), and `bad` is refused.
+void expect_umat_option_from_props(const char* name, int position, double value, double bad) {
+  SCOPED_TRACE(std::string(name) + " at PROPS(" + std::to_string(position) + ")");
   nlohmann::json j = nlohmann::json::parse(acst::test::read_text(guide_path));
   std::vector<double> props = props_from_json(j.dump());
-  props.insert(props.end(), {0.0, 0.0, 0.0, 1.5});  // PROPS(21..23) defaults, PROPS(24) a
-  j["parameters"]["elastic_anisotropy"] = 1.5;
+  props.resize(position, 0.0);
+  props.back() = value;
+  j["parameters"][name] = value;
   PlaneStrainPoint pt = expect_umat_plane_strain_matches(j.dump(), props);
-  props.back() = 6.0;
+  props.back() = bad;
   const double d[4] = {1e-5, -1e-5, 0.0, 0.0};
   UmatCall umat;
   umat(pt.stress, pt.statev, d, 4, ACST_NSTATV, props.data(), static_cast<int>(props.size()));
-  EXPECT_LT(umat.pnewdt, 1.0) << "PROPS(24) = 6 is out of range";
+  EXPECT_LT(umat.pnewdt, 1.0) << bad << " is out of range";
+}
+
+TEST(CAbiConsistency, UmatElasticAnisotropyFromProps24MatchesTheJsonMaterial) {
+  expect_umat_option_from_props("elastic_anisotropy", 24, 1.5, 6.0);
+}
+
+// beta = 0.9, so that the path's 100-110 kPa, near pa, still changes n by a few per cent.
+TEST(CAbiConsistency, UmatPeakPressureExponentFromProps25MatchesTheJsonMaterial) {
+  expect_umat_option_from_props("peak_pressure_exponent", 25, 0.9, 1.2);
 }
 
 // A failing increment asks for a smaller step and leaves stress and state as they were.

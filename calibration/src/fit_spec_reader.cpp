@@ -33,10 +33,12 @@ std::string list(const char* const* begin, const char* const* end) {
   return s;
 }
 
-// The constants a fit may vary: the sand's, and the option elastic_anisotropy; not the density
-// bounds (they define Dr), the guards or the discrete lode_form.
+// The constants a fit may vary: the sand's, and the options elastic_anisotropy and
+// peak_pressure_exponent; not the density bounds (they define Dr), the guards or the discrete
+// lode_form.
 constexpr const char* fittable_names[] = {"G0", "nu", "Mc", "c",   "e_Gamma", "lambda_c", "xi", "d1",
-                                          "m",  "h1", "h2", "n",   "e_A",     "F0",       "k_f", "elastic_anisotropy"};
+                                          "m",  "h1", "h2", "n",   "e_A",     "F0",       "k_f", "elastic_anisotropy",
+                                          "peak_pressure_exponent"};
 
 // Checks one parameter value against the material's ranges, the other constants as in the base.
 void check_in_range(const Parameters& base, const ParameterInfo& info, double value, const std::string& path) {

@@ -48,6 +48,7 @@ acst::Material material_from_props(const double* props, int nprops) {
   for (int i = 0; i < acst::parameter_count; ++i) acst::parameter_by_index(p, i) = props[i];
   if (nprops > 22) p.lode_form = props[22];  // checked with the others (0 or 1)
   if (nprops > 23) p.elastic_anisotropy = props[23];  // checked with the others ([-5, 5])
+  if (nprops > 24) p.peak_pressure_exponent = props[24];  // checked with the others ([-1, 1])
   acst::integration::Options o;
   if (nprops > 18) {
     const int code = static_cast<int>(props[18]);

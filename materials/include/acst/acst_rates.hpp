@@ -48,7 +48,8 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   const double h = hardening_coefficient(prm.h1, prm.h2, e);
   q.h_floored = h < prm.h_min;
   q.h = q.h_floored ? prm.h_min : h;
-  q.Kp = plastic_modulus(q.moduli.G, q.h, prm.Mc, g, prm.n, q.zeta, R);
+  const double n = peak_state_coefficient(prm.n, prm.peak_pressure_exponent, q.p, prm.p_min, atmospheric_pressure);
+  q.Kp = plastic_modulus(q.moduli.G, q.h, prm.Mc, g, n, q.zeta, R);
   q.n_r = contract(q.ratio.n, q.ratio.r);
   return q;
 }

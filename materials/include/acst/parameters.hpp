@@ -52,6 +52,8 @@ struct Parameters {
   double lode_form = 0.0;
   // Fabric-dependent cross-anisotropic elasticity (docs/model.md section 2): 0 isotropic.
   double elastic_anisotropy = 0.0;
+  // Pressure-dependent peak-state coefficient (docs/model.md section 6): 0 the published constant n.
+  double peak_pressure_exponent = 0.0;
 
   Variant variant = Variant::anisotropic;
 };
@@ -109,6 +111,8 @@ inline constexpr ParameterInfo parameter_table[] = {
      "g(theta): 0 Li (2002), 1 Willam & Warnke (1975) (0)"},
     {"elastic_anisotropy", &Parameters::elastic_anisotropy, -5, 5, false, false, "-", true, true, false,
      "a: Young's modulus along F's major axis exp(a |F|) times across it (0)"},
+    {"peak_pressure_exponent", &Parameters::peak_pressure_exponent, -1, 1, false, false, "-", false, true, false,
+     "beta: the peak-state coefficient is n (p/pa)^beta (0)"},
 };
 
 inline constexpr int parameter_table_size = sizeof parameter_table / sizeof parameter_table[0];
