@@ -74,6 +74,20 @@ TEST(FitSpec, ValidDescriptionAndNormalisedWeights) {
   EXPECT_EQ(p.simulations().size(), 6u);  // 3 curves + the table rows with xi 90 and omega 0 (TC, PSC, TE)
 }
 
+// max_cutbacks from the defaults or the experiment reaches the scene of every run built from it
+// (the driver's solver/max_cutbacks); without it a run has no limit.
+TEST(FitSpec, MaxCutbacksReachesEveryRunsScene) {
+  const FitSpec none = parse_fit_spec(description(), base_dir, "t");
+  for (const Simulation& sim : Problem(none).simulations()) EXPECT_EQ(sim.scene.solver.max_cutbacks, 0);
+  std::string text = description("\"weights\"", "\"defaults\": {\"max_cutbacks\": 700}, \"weights\"");
+  const std::string second = "\"group\": \"b\", \"weight\": 3";
+  text.replace(text.find(second), second.size(), second + ", \"max_cutbacks\": 9");
+  const FitSpec s = parse_fit_spec(text, base_dir, "t");
+  const Problem p(s);
+  for (std::size_t k = 0; k < s.experiments.size(); ++k)
+    for (std::size_t i : p.simulations_of(k)) EXPECT_EQ(p.simulations()[i].scene.solver.max_cutbacks, k == 1 ? 9 : 700) << k;
+}
+
 struct BadCase {
   const char* from;
   const char* to;
@@ -108,6 +122,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"\"void_ratio_at_kPa\": 29.4", "\"void_ratio_at_kPa\": 29.4, \"strain_range_pct\": [5, 1]", "/experiments/0/strain_range_pct", "lower < upper"},
         BadCase{"\"weights\"", "\"optimizer\": {\"abandon_factor\": 0.5}, \"weights\"", "/optimizer/abandon_factor", "at least 1"},
         BadCase{"\"weights\"", "\"optimizer\": {\"abandon_after\": 0}, \"weights\"", "/optimizer/abandon_after", "out of range"},
+        BadCase{"\"void_ratio_at_kPa\": 29.4", "\"void_ratio_at_kPa\": 29.4, \"max_cutbacks\": 0", "/experiments/0/max_cutbacks", "out of range"},
         BadCase{"{\"file\": \"../parameters/toyoura_acst_guide.json\"}", "{\"file\": \"../parameters/toyoura_isotropic_literature.json\"}",
                 "/parameters/F0", "isotropic model has no fabric"}));
 

@@ -1,7 +1,8 @@
 // Cut-back: an increment that fails (material or Newton) is halved and retried, up to
 // solver.max_halvings; the recovered result agrees with a finely incremented run. At the limit
 // the run stops with a clear message and a one-increment reproducer scene that replays the
-// failure (and passes once cut-back is allowed again).
+// failure (and passes once cut-back is allowed again). solver.max_cutbacks bounds the halvings of
+// the whole run.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,6 +81,38 @@ TEST(CutBack, FinalFailureStopsWithAMessageAndAReproducerThatReplaysIt) {
   again["solver"]["max_halvings"] = 12;
   const driver::RunResult fixed = run(again.dump());
   EXPECT_TRUE(fixed.ok) << fixed.message;
+}
+
+// The oversized increment above needs some halvings in all; a budget of that many lets the run
+// through unchanged, one fewer stops it at the halving it refuses, naming the limit.
+TEST(CutBack, MaxCutbacksBoundsTheHalvingsOfTheWholeRun) {
+  const auto free_run = run(one_big_increment(20));
+  ASSERT_TRUE(free_run.ok) << free_run.message;
+  const long needed = free_run.cutbacks;
+  ASSERT_GE(needed, 2);
+  const auto within = run(one_big_increment(20, ", \"solver\": {\"max_cutbacks\": " + std::to_string(needed) + "}"));
+  ASSERT_TRUE(within.ok) << within.message;
+  EXPECT_EQ(within.cutbacks, needed);
+  EXPECT_EQ(within.records.back().stress, free_run.records.back().stress) << "a budget not reached changes nothing";
+
+  const auto over = run(one_big_increment(20, ", \"solver\": {\"max_cutbacks\": " + std::to_string(needed - 1) + "}"));
+  ASSERT_FALSE(over.ok);
+  EXPECT_EQ(over.cutbacks, 0) << "the increment did not complete";
+  EXPECT_NE(over.message.find("after " + std::to_string(needed - 1) + " cut-backs in this run (solver/max_cutbacks)"),
+            std::string::npos) << over.message;
+  EXPECT_EQ(over.records.size(), 1u);
+}
+
+TEST(CutBack, MaxCutbacksOutOfRangeIsRefusedWithItsPath) {
+  for (const char* bad : {"0", "-3", "2.5", "\"many\"", "2000000000"}) {
+    SCOPED_TRACE(bad);
+    try {
+      parse(one_big_increment(20, std::string(", \"solver\": {\"max_cutbacks\": ") + bad + "}"));
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("/solver/max_cutbacks"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ void read_table_columns(const json& e, const KeyPath& key_path, const driver::La
 
 ExperimentSpec read_experiment(const json& j, const std::string& path, const json& defaults, const std::string& base_dir) {
   f::allow_keys(j, {"id", "data", "test", "group", "sigma3_kPa", "void_ratio", "void_ratio_at_kPa",
-                    "bedding_angle_deg", "b", "strain_range_pct", "strain_increment_pct", "weight", "fit",
+                    "bedding_angle_deg", "b", "strain_range_pct", "strain_increment_pct", "max_cutbacks", "weight", "fit",
                     "stress_measure", "rows", "columns", "peak_search_strain_pct", "description"},
                 path);
   // Defaults first, then the experiment's own keys.
@@ -203,6 +203,7 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
   if (e.contains("weight")) x.weight = f::number(e["weight"], key_path("weight"), {0.0, 1e6, false, false});
   if (e.contains("strain_increment_pct"))
     x.strain_increment_pct = f::number(e["strain_increment_pct"], key_path("strain_increment_pct"), {1e-4, 1.0}, "%");
+  if (e.contains("max_cutbacks")) x.max_cutbacks = f::integer(e["max_cutbacks"], key_path("max_cutbacks"), 1, 1000000000);
 
   if (curve) {
     x.bedding_angle_deg = e.contains("bedding_angle_deg")

@@ -64,7 +64,9 @@ json scene_json(const FitSpec& spec, const ExperimentSpec& x, const std::string&
   steps.push_back(shear);
   json initial = {{"confining_pressure", consolidate ? x.void_ratio_at_kPa : x.sigma3_kPa}, {"void_ratio", x.void_ratio}};
   if (spec.material.value("model", std::string("ACST")) != "isotropic") initial["bedding_angle_deg"] = bedding;
-  return {{"material", spec.material}, {"initial_state", initial}, {"steps", steps}, {"output", {{"plot", false}}}};
+  json scene = {{"material", spec.material}, {"initial_state", initial}, {"steps", steps}, {"output", {{"plot", false}}}};
+  if (x.max_cutbacks > 0) scene["solver"] = {{"max_cutbacks", x.max_cutbacks}};
+  return scene;
 }
 
 driver::Scene build_scene(const json& j, const ExperimentSpec& x, const std::string& name) {

@@ -43,6 +43,7 @@ struct Failure {
   Sym guess;
   IncrementResult result;
   double piece = 1.0;
+  bool over_budget = false;  // stopped by solver/max_cutbacks, not by max_halvings
 };
 
 double signed_margin(const ExitCondition& c, const Point& pt) {  // >= 0 when the condition is met
@@ -200,8 +201,10 @@ class Runner {
         }
         continue;
       }
-      if (level >= max_level) {
-        if (fail) *fail = {pt.state, c, guess, r, piece};
+      const long budget = scene_.solver.max_cutbacks;
+      const bool over_budget = budget > 0 && result_.cutbacks + w.cutbacks >= budget;
+      if (level >= max_level || over_budget) {
+        if (fail) *fail = {pt.state, c, guess, r, piece, over_budget};
         return false;
       }
       ++level;
@@ -280,10 +283,12 @@ class Runner {
              integration::reason_text(f.result.material.reason) + ")";
     char piece[64];
     std::snprintf(piece, sizeof piece, "%.3g", f.piece);
+    const std::string stopped_by =
+        f.over_budget ? std::to_string(scene_.solver.max_cutbacks) + " cut-backs in this run (solver/max_cutbacks)"
+                      : std::to_string(scene_.solver.max_halvings) + " halvings";
     result_.message = s.path + " (" + s.kind + "), increment " + std::to_string(k) + " of " + std::to_string(n) +
                       ": " + why + " after " + std::to_string(f.result.iterations) + " Newton iterations, at " +
-                      piece + " of the increment after " + std::to_string(scene_.solver.max_halvings) +
-                      " halvings; the state is the last converged one";
+                      piece + " of the increment after " + stopped_by + "; the state is the last converged one";
     // A one-increment scene that replays it: the full state, the failing piece as six
     // constraints in scene units, the same first Newton guess, and no cut-back.
     json rows = json::array();

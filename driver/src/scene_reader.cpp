@@ -104,7 +104,7 @@ void read_initial_state(const json& j, const std::string& path, Scene& scene) {
 }
 
 void read_solver(const json& j, const std::string& path, SolverSettings& s) {
-  f::allow_keys(j, {"max_iterations", "stress_tolerance", "strain_tolerance", "max_halvings"}, path);
+  f::allow_keys(j, {"max_iterations", "stress_tolerance", "strain_tolerance", "max_halvings", "max_cutbacks"}, path);
   if (j.contains("max_iterations"))
     s.newton.max_iterations = static_cast<int>(f::integer(j["max_iterations"], path + "/max_iterations", 1, 200));
   if (j.contains("stress_tolerance"))
@@ -112,6 +112,7 @@ void read_solver(const json& j, const std::string& path, SolverSettings& s) {
   if (j.contains("strain_tolerance"))
     s.newton.strain_tolerance = f::number(j["strain_tolerance"], path + "/strain_tolerance", {0.0, 1e-6, true, false}, "(absolute strain)");
   if (j.contains("max_halvings")) s.max_halvings = static_cast<int>(f::integer(j["max_halvings"], path + "/max_halvings", 0, 40));
+  if (j.contains("max_cutbacks")) s.max_cutbacks = f::integer(j["max_cutbacks"], path + "/max_cutbacks", 1, 1000000000);
 }
 
 void read_output(const json& j, const std::string& path, OutputSpec& o) {

@@ -43,6 +43,7 @@ struct ExperimentSpec {
   double b = 0.0;                  // true_triaxial only
   double strain_lo_pct = 0.0, strain_hi_pct = 0.0;  // axial strain range of the points used
   double strain_increment_pct = 0.05;               // axial strain per increment of the run
+  long max_cutbacks = 0;  // the most halvings of a run's increments in all (0: no limit), else a failed test
   double weight = 1.0;             // relative weight inside its test type
   bool fit_stress = true, fit_volumetric = true;
   StressMeasure stress_measure = StressMeasure::stress_ratio;

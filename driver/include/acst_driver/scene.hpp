@@ -82,6 +82,7 @@ struct InitialState {
 struct SolverSettings {
   NewtonOptions newton;
   int max_halvings = 12;  // cut-back: an increment may be halved this many times
+  long max_cutbacks = 0;  // the most halvings of the whole run (0: no limit)
 };
 
 struct OutputSpec {
