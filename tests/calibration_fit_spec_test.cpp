@@ -78,7 +78,8 @@ TEST(FitSpec, ValidDescriptionAndNormalisedWeights) {
 // (the driver's solver/max_cutbacks); without it a run has no limit.
 TEST(FitSpec, MaxCutbacksReachesEveryRunsScene) {
   const FitSpec none = parse_fit_spec(description(), base_dir, "t");
-  for (const Simulation& sim : Problem(none).simulations()) EXPECT_EQ(sim.scene.solver.max_cutbacks, 0);
+  const Problem unlimited(none);
+  for (const Simulation& sim : unlimited.simulations()) EXPECT_EQ(sim.scene.solver.max_cutbacks, 0);
   std::string text = description("\"weights\"", "\"defaults\": {\"max_cutbacks\": 700}, \"weights\"");
   const std::string second = "\"group\": \"b\", \"weight\": 3";
   text.replace(text.find(second), second.size(), second + ", \"max_cutbacks\": 9");
