@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "acst/acst_rates.hpp"
+#include "acst_driver/record.hpp"
 #include "driver_scenes.hpp"
 #include "test_materials.hpp"
 
@@ -26,8 +27,6 @@ std::string guide_with_beta(double b) {
   return m.dump();
 }
 
-double stress_ratio(const Sym& s) { return std::sqrt(1.5) * norm(deviator(s)) / mean_stress(s); }
-
 // Drained triaxial compression to 12 % axial strain in steps of 0.02 %.
 std::vector<driver::Record> triaxial(double b, double p0, double e0) {
   const auto r = run(scene_json("[{\"preset\": \"drained_triaxial_compression\", \"axial_strain_pct\": 12, \"increments\": 600}]",
@@ -39,7 +38,7 @@ std::vector<driver::Record> triaxial(double b, double p0, double e0) {
 driver::Record triaxial_peak(double b, double p0, double e0) {
   const auto records = triaxial(b, p0, e0);
   return *std::max_element(records.begin(), records.end(), [](const auto& a, const auto& c) {
-    return stress_ratio(a.stress) < stress_ratio(c.stress);
+    return driver::stress_ratio_of(a.stress) < driver::stress_ratio_of(c.stress);
   });
 }
 
@@ -52,7 +51,7 @@ TEST(PeakPressureExponent, DensePeaksSitOnThePressureDependentPeakSurface) {
   for (double p0 : {20.0, 400.0}) {
     SCOPED_TRACE("p0 = " + std::to_string(p0));
     const driver::Record peak = triaxial_peak(beta, p0, 0.66);
-    const double p = mean_stress(peak.stress), R = stress_ratio(peak.stress);
+    const double p = mean_stress(peak.stress), R = driver::stress_ratio_of(peak.stress);
     ASSERT_LT(peak.zeta, -0.05) << "a dense state";
     const double n_p = prm.n * std::pow(p / atmospheric_pressure, beta);
     EXPECT_NEAR(R / (prm.Mc * std::exp(-n_p * peak.zeta)), 1.0, 0.005);
@@ -66,11 +65,11 @@ TEST(PeakPressureExponent, DensePeaksSitOnThePressureDependentPeakSurface) {
 // but its bound Mc exp(-n zeta) is nearer Mc, so its stress ratio rises faster: higher at 2 %.
 TEST(PeakPressureExponent, APositiveExponentFlattensThePeaksPressureDependence) {
   const auto change = [](double p0, double e0) {
-    return stress_ratio(triaxial_peak(beta, p0, e0).stress) / stress_ratio(triaxial_peak(0.0, p0, e0).stress) - 1.0;
+    return driver::stress_ratio_of(triaxial_peak(beta, p0, e0).stress) / driver::stress_ratio_of(triaxial_peak(0.0, p0, e0).stress) - 1.0;
   };
   EXPECT_LT(change(20.0, 0.66), -0.05) << "dense, 20 kPa";
   EXPECT_GT(change(400.0, 0.66), 0.05) << "dense, 400 kPa";
-  const auto at_two_pct = [](double b) { return stress_ratio(triaxial(b, 20.0, 0.95)[100].stress); };
+  const auto at_two_pct = [](double b) { return driver::stress_ratio_of(triaxial(b, 20.0, 0.95)[100].stress); };
   EXPECT_GT(at_two_pct(beta) / at_two_pct(0.0) - 1.0, 0.01) << "loose, 20 kPa, 2 % axial strain";
 }
 
