@@ -8,8 +8,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "acst/lode.hpp"
@@ -91,6 +93,56 @@ TEST(WillamWarnke, AgreesWithThePapersFormInPrincipalStresses) {
       EXPECT_NEAR(g_ww(c, sin3theta_of(acst::rotate(sigma, Q))), expected, 1e-12) << "c " << c << " b " << b;
     }
   }
+}
+
+// The angle from a deviator's principal values (one square root where it has no out-of-plane
+// shear, src/lode.cpp) against the paper's form in extended precision at the angle the deviator
+// was built with: principal values -sqrt(2/3) cos(theta + 2 pi k/3), theta from the extension
+// meridian, in any order, turned about axis 3, scaled by either sign. Within x - 1/2 < 1e-6 of
+// compression it is the sin 3theta path itself, bit for bit (the delivered sets were fitted with
+// it; there its theta is up to 1e-8 off, the acos of a number near -1).
+TEST(WillamWarnke, AngleFromPrincipalValuesAgreesWithExtendedPrecision) {
+  using L = long double;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const L pi = std::acos(L(-1));
+  for (int i = 0; i < 3000; ++i) {
+    const double c = 0.55 + 0.45 * unit(rng);
+    // Every tenth angle within 1e-9 to 1e-3 of a meridian, the rest anywhere between.
+    const L span = pi / 3, near = std::pow(L(10), -9 + 6 * L(unit(rng)));
+    const L theta = i % 10 == 0 ? near : i % 10 == 1 ? span - near : span * (0.001 + 0.998 * L(unit(rng)));
+    L u_k[3];
+    for (int k = 0; k < 3; ++k) u_k[k] = -std::sqrt(L(2) / 3) * std::cos(theta + 2 * pi * k / 3);
+    const int first = i % 3;  // which principal value lies along axis 3
+    const double in1 = static_cast<double>(u_k[(first + 1) % 3]), in2 = static_cast<double>(u_k[(first + 2) % 3]);
+    const double turn = 3.14 * unit(rng), cs = std::cos(turn), sn = std::sin(turn);
+    const double scale = (i % 2 == 0 ? 1.0 : -1.0) * (0.01 + 100.0 * unit(rng));
+    acst::Sym a = acst::Sym::Zero();
+    a[0] = (cs * cs * in1 + sn * sn * in2) / scale;
+    a[1] = (sn * sn * in1 + cs * cs * in2) / scale;
+    a[3] = cs * sn * (in1 - in2) / scale;
+    a[2] = static_cast<double>(u_k[first]) / scale;
+    const double s = std::clamp(acst::lode_sin3theta_unclamped(scale * a), -1.0, 1.0);
+    const auto got = acst::lode_interpolation(LodeShape(c, LodeForm::willam_warnke), s, a, scale);
+    const L distance = std::cos(theta) - L(0.5);  // x - 1/2
+    if (distance < 0.9e-6) {
+      const auto by_sin = acst::lode_interpolation(LodeShape(c, LodeForm::willam_warnke), s);
+      EXPECT_EQ(got.g, by_sin.g) << "i " << i;
+      EXPECT_EQ(got.dg_ds, by_sin.dg_ds) << "i " << i;
+      continue;
+    }
+    if (distance < 1.1e-6) continue;  // either path, by round-off
+    const L g = willam_warnke_radius<L>(1, c, theta);
+    const L dg_ds = willam_warnke_radius_slope<L>(1, c, theta) / (-3 * std::sin(3 * theta));
+    EXPECT_NEAR(got.g, static_cast<double>(g), 1e-14) << "i " << i;
+    EXPECT_NEAR(got.dg_ds, static_cast<double>(dg_ds), 1e-9 * std::abs(static_cast<double>(dg_ds))) << "i " << i;
+  }
+  // With out-of-plane shear it is the sin 3theta path itself.
+  const acst::Sym a = (acst::Sym() << 0.3, -0.1, -0.2, 0.05, 0.02, 0.0).finished();
+  const double s = acst::lode_sin3theta_unclamped(a / acst::norm(a));
+  const auto general = acst::lode_interpolation(LodeShape(0.7, LodeForm::willam_warnke), s, a, 1.0 / acst::norm(a));
+  EXPECT_EQ(general.g, acst::lode_interpolation(LodeShape(0.7, LodeForm::willam_warnke), s).g);
+  EXPECT_EQ(general.dg_ds, acst::lode_interpolation(LodeShape(0.7, LodeForm::willam_warnke), s).dg_ds);
 }
 
 TEST(WillamWarnke, LiesBelowLisFormBetweenTheMeridians) {

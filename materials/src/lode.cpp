@@ -2,9 +2,11 @@
 
 namespace acst {
 
-LodeInterpolation willam_warnke_interpolation(double c, double sin3theta) {
+namespace {
+
+// g and dg/ds at x = cos(theta_w) (src/lode.hpp).
+LodeInterpolation willam_warnke_at(double c, double x) {
   const double a = 1.0 - c * c, b = 2.0 * c - 1.0;
-  const double x = std::cos(std::acos(std::clamp(sin3theta, -1.0, 1.0)) / 3.0);
   const double root = std::sqrt(std::max(4.0 * a * x * x + 5.0 * c * c - 4.0 * c, 0.0));
   const double num = 2.0 * a * x + b * root, den = 4.0 * a * x * x + b * b;
   const double g = num / den;
@@ -16,6 +18,28 @@ LodeInterpolation willam_warnke_interpolation(double c, double sin3theta) {
   const double dnum = 2.0 * a + (root > 0.0 ? b * 4.0 * a * x / root : 0.0), dden = 8.0 * a * x;
   const double dg_dx = (dnum * den - num * dden) / (den * den);
   return {g, dg_dx / (12.0 * delta * (x + 0.5))};
+}
+
+// x = -sqrt(3/2) min eig(scale a) for a with a_13 = a_23 = 0: a_33 and the in-plane pair
+// m -+ sqrt(d^2 + a_12^2) are a's principal values.
+double cosine_from_principal_values(const Sym& a, double scale) {
+  const double m = 0.5 * (a[0] + a[1]), d = 0.5 * (a[0] - a[1]);
+  const double radius = std::sqrt(d * d + a[3] * a[3]);
+  const double lowest = scale > 0.0 ? std::min(a[2], m - radius) : std::max(a[2], m + radius);
+  return std::clamp(-std::sqrt(1.5) * scale * lowest, 0.5, 1.0);
+}
+
+}  // namespace
+
+LodeInterpolation willam_warnke_interpolation(double c, double sin3theta) {
+  return willam_warnke_at(c, std::cos(std::acos(std::clamp(sin3theta, -1.0, 1.0)) / 3.0));
+}
+
+LodeInterpolation willam_warnke_interpolation(double c, double sin3theta, const Sym& a, double scale) {
+  if (a[4] != 0.0 || a[5] != 0.0) return willam_warnke_interpolation(c, sin3theta);
+  const double x = cosine_from_principal_values(a, scale);
+  if (x - 0.5 < 1e-6) return willam_warnke_interpolation(c, sin3theta);
+  return willam_warnke_at(c, x);
 }
 
 }  // namespace acst

@@ -45,6 +45,18 @@ inline LodeInterpolation lode_interpolation(double c, double sin3theta) {
 // 4-11 % (bench/RESULTS.md section 1j).
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
 
+// The same for the unit deviator u = scale a whose sin 3theta is sin3theta, with x taken from
+// u's principal values where that is cheaper: 4x^3 - 3x = s has the principal values of
+// -sqrt(3/2) u as its roots, and acos(s)/3 in [0, pi/3] picks the largest, so x = -sqrt(3/2)
+// min eig(u). Without out-of-plane shear (a_13 = a_23 = 0: every plane-strain and triaxial
+// state) that eigenvalue costs one square root instead of acos and cos, a tenth of a footing's
+// time (bench/RESULTS.md 1q); other states take x from s, and so do states within x - 1/2 < 1e-6
+// of compression, where every triaxial test runs: there acos(s) of an s rounded near -1 puts
+// theta 1e-8 off, which moves dg/ds by up to 1e-6, and the calibration's adaptive substeps turn
+// such a change into one of 1e-6 in its objective (the delivered sets were fitted with it).
+// Elsewhere the two agree to round-off (tests/lode_willam_warnke_test.cpp).
+LodeInterpolation willam_warnke_interpolation(double c, double sin3theta, const Sym& a, double scale);
+
 enum class LodeForm { li2002, willam_warnke };
 
 // The Lode interpolation a material uses: its c and its form (Li 2002 unless chosen otherwise).
@@ -57,6 +69,13 @@ struct LodeShape {
 
 inline LodeInterpolation lode_interpolation(const LodeShape& shape, double sin3theta) {
   return shape.form == LodeForm::willam_warnke ? willam_warnke_interpolation(shape.c, sin3theta)
+                                               : lode_interpolation(shape.c, sin3theta);
+}
+
+// The same for sin3theta of the unit deviator scale a (scale != 0), which Willam & Warnke's form
+// uses for a cheaper angle.
+inline LodeInterpolation lode_interpolation(const LodeShape& shape, double sin3theta, const Sym& a, double scale) {
+  return shape.form == LodeForm::willam_warnke ? willam_warnke_interpolation(shape.c, sin3theta, a, scale)
                                                : lode_interpolation(shape.c, sin3theta);
 }
 

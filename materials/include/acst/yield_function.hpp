@@ -42,7 +42,7 @@ inline double yield_value(const Sym& sigma, const LodeShape& c, double R_toleran
   if (R < R_tolerance) return yield_function(R, lode_interpolation(c, 0.0).g, H);
   const double inv_norm = 1.0 / d_norm;
   const double s_raw = std::copysign(1.0, p) * (-3.0 * std::sqrt(6.0)) * determinant(d) * (inv_norm * inv_norm * inv_norm);
-  return yield_function(R, lode_interpolation(c, std::clamp(s_raw, -1.0, 1.0)).g, H);
+  return yield_function(R, lode_interpolation(c, std::clamp(s_raw, -1.0, 1.0), d, std::copysign(inv_norm, p)).g, H);
 }
 
 // n = dev(N)/|dev(N)| with dev(N) = [sqrt(3/2)(g + 3 s g') r_hat + 9 g' (r_hat^2 - I/3)] / g^2,
@@ -71,7 +71,7 @@ inline StressRatioState stress_ratio_state(const Sym& sigma, const LodeShape& c,
   const double s_raw = lode_sin3theta_unclamped(r_hat);
   st.lode_clamped = std::abs(s_raw) > 1.0 + 1e-10;
   st.sin3theta = std::clamp(s_raw, -1.0, 1.0);
-  st.lode = lode_interpolation(c, st.sin3theta);
+  st.lode = lode_interpolation(c, st.sin3theta, r_hat, 1.0);
   const double g = st.lode.g, dg = st.lode.dg_ds;
   Sym devN = std::sqrt(1.5) * (g + 3.0 * st.sin3theta * dg) * r_hat + 9.0 * dg * deviator(square(r_hat));
   devN *= 1.0 / (g * g);
