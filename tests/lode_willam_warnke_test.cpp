@@ -124,6 +124,7 @@ TEST(WillamWarnke, AngleFromPrincipalValuesAgreesWithExtendedPrecision) {
     a[2] = static_cast<double>(u_k[first]) / scale;
     const double s = std::clamp(acst::lode_sin3theta_unclamped(scale * a), -1.0, 1.0);
     const auto got = acst::lode_interpolation(LodeShape(c, LodeForm::willam_warnke), s, a, scale);
+    EXPECT_EQ(acst::lode_g(LodeShape(c, LodeForm::willam_warnke), s, a, scale), got.g);  // the yield value's g alone
     const L distance = std::cos(theta) - L(0.5);  // x - 1/2
     if (distance < 0.9e-6) {
       const auto by_sin = acst::lode_interpolation(LodeShape(c, LodeForm::willam_warnke), s);

@@ -4,11 +4,20 @@ namespace acst {
 
 namespace {
 
-// g and dg/ds at x = cos(theta_w) (src/lode.hpp).
-LodeInterpolation willam_warnke_at(double c, double x) {
+// g's numerator and denominator at x = cos(theta_w) (include/acst/lode.hpp).
+struct Quotient {
+  double a, b, root, num, den;
+};
+
+Quotient willam_warnke_quotient(double c, double x) {
   const double a = 1.0 - c * c, b = 2.0 * c - 1.0;
   const double root = std::sqrt(std::max(4.0 * a * x * x + 5.0 * c * c - 4.0 * c, 0.0));
-  const double num = 2.0 * a * x + b * root, den = 4.0 * a * x * x + b * b;
+  return {a, b, root, 2.0 * a * x + b * root, 4.0 * a * x * x + b * b};
+}
+
+// g and dg/ds at x.
+LodeInterpolation willam_warnke_at(double c, double x) {
+  const auto [a, b, root, num, den] = willam_warnke_quotient(c, x);
   const double g = num / den;
   const double delta = x - 0.5;
   if (delta < 1e-6) {
@@ -20,6 +29,8 @@ LodeInterpolation willam_warnke_at(double c, double x) {
   return {g, dg_dx / (12.0 * delta * (x + 0.5))};
 }
 
+double cosine_from_sin3theta(double sin3theta) { return std::cos(std::acos(std::clamp(sin3theta, -1.0, 1.0)) / 3.0); }
+
 // x = -sqrt(3/2) min eig(scale a) for a with a_13 = a_23 = 0: a_33 and the in-plane pair
 // m -+ sqrt(d^2 + a_12^2) are a's principal values.
 double cosine_from_principal_values(const Sym& a, double scale) {
@@ -29,17 +40,26 @@ double cosine_from_principal_values(const Sym& a, double scale) {
   return std::clamp(-std::sqrt(1.5) * scale * lowest, 0.5, 1.0);
 }
 
+// x from the principal values where they are cheap and not near compression (include/acst/lode.hpp).
+double willam_warnke_cosine(double sin3theta, const Sym& a, double scale) {
+  if (a[4] != 0.0 || a[5] != 0.0) return cosine_from_sin3theta(sin3theta);
+  const double x = cosine_from_principal_values(a, scale);
+  return x - 0.5 < 1e-6 ? cosine_from_sin3theta(sin3theta) : x;
+}
+
 }  // namespace
 
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta) {
-  return willam_warnke_at(c, std::cos(std::acos(std::clamp(sin3theta, -1.0, 1.0)) / 3.0));
+  return willam_warnke_at(c, cosine_from_sin3theta(sin3theta));
 }
 
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta, const Sym& a, double scale) {
-  if (a[4] != 0.0 || a[5] != 0.0) return willam_warnke_interpolation(c, sin3theta);
-  const double x = cosine_from_principal_values(a, scale);
-  if (x - 0.5 < 1e-6) return willam_warnke_interpolation(c, sin3theta);
-  return willam_warnke_at(c, x);
+  return willam_warnke_at(c, willam_warnke_cosine(sin3theta, a, scale));
+}
+
+double willam_warnke_g(double c, double sin3theta, const Sym& a, double scale) {
+  const Quotient q = willam_warnke_quotient(c, willam_warnke_cosine(sin3theta, a, scale));
+  return q.num / q.den;
 }
 
 }  // namespace acst

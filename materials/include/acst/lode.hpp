@@ -57,6 +57,9 @@ LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
 // Elsewhere the two agree to round-off (tests/lode_willam_warnke_test.cpp).
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta, const Sym& a, double scale);
 
+// Its g alone, the same number, for the yield value (which has no use for dg/ds and its divisions).
+double willam_warnke_g(double c, double sin3theta, const Sym& a, double scale);
+
 enum class LodeForm { li2002, willam_warnke };
 
 // The Lode interpolation a material uses: its c and its form (Li 2002 unless chosen otherwise).
@@ -77,6 +80,12 @@ inline LodeInterpolation lode_interpolation(const LodeShape& shape, double sin3t
 inline LodeInterpolation lode_interpolation(const LodeShape& shape, double sin3theta, const Sym& a, double scale) {
   return shape.form == LodeForm::willam_warnke ? willam_warnke_interpolation(shape.c, sin3theta, a, scale)
                                                : lode_interpolation(shape.c, sin3theta);
+}
+
+// g alone, for the same arguments.
+inline double lode_g(const LodeShape& shape, double sin3theta, const Sym& a, double scale) {
+  return shape.form == LodeForm::willam_warnke ? willam_warnke_g(shape.c, sin3theta, a, scale)
+                                               : lode_interpolation(shape.c, sin3theta).g;
 }
 
 }  // namespace acst

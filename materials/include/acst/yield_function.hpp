@@ -42,7 +42,7 @@ inline double yield_value(const Sym& sigma, const LodeShape& c, double R_toleran
   if (R < R_tolerance) return yield_function(R, lode_interpolation(c, 0.0).g, H);
   const double inv_norm = 1.0 / d_norm;
   const double s_raw = std::copysign(1.0, p) * (-3.0 * std::sqrt(6.0)) * determinant(d) * (inv_norm * inv_norm * inv_norm);
-  return yield_function(R, lode_interpolation(c, std::clamp(s_raw, -1.0, 1.0), d, std::copysign(inv_norm, p)).g, H);
+  return yield_function(R, lode_g(c, std::clamp(s_raw, -1.0, 1.0), d, std::copysign(inv_norm, p)), H);
 }
 
 // n = dev(N)/|dev(N)| with dev(N) = [sqrt(3/2)(g + 3 s g') r_hat + 9 g' (r_hat^2 - I/3)] / g^2,
