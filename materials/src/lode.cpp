@@ -40,11 +40,10 @@ double cosine_from_principal_values(const Sym& a, double scale) {
   return std::clamp(-std::sqrt(1.5) * scale * lowest, 0.5, 1.0);
 }
 
-// x from the principal values where they are cheap and not near compression (include/acst/lode.hpp).
+// x from the principal values where there is shear in the plane only (include/acst/lode.hpp).
 double willam_warnke_cosine(double sin3theta, const Sym& a, double scale) {
-  if (a[4] != 0.0 || a[5] != 0.0) return cosine_from_sin3theta(sin3theta);
-  const double x = cosine_from_principal_values(a, scale);
-  return x - 0.5 < 1e-6 ? cosine_from_sin3theta(sin3theta) : x;
+  const bool plane_shear = a[3] != 0.0 && a[4] == 0.0 && a[5] == 0.0;
+  return plane_shear ? cosine_from_principal_values(a, scale) : cosine_from_sin3theta(sin3theta);
 }
 
 }  // namespace

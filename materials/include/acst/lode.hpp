@@ -48,13 +48,13 @@ LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
 // The same for the unit deviator u = scale a whose sin 3theta is sin3theta, with x taken from
 // u's principal values where that is cheaper: 4x^3 - 3x = s has the principal values of
 // -sqrt(3/2) u as its roots, and acos(s)/3 in [0, pi/3] picks the largest, so x = -sqrt(3/2)
-// min eig(u). Without out-of-plane shear (a_13 = a_23 = 0: every plane-strain and triaxial
-// state) that eigenvalue costs one square root instead of acos and cos, a tenth of a footing's
-// time (bench/RESULTS.md 1q); other states take x from s, and so do states within x - 1/2 < 1e-6
-// of compression, where every triaxial test runs: there acos(s) of an s rounded near -1 puts
-// theta 1e-8 off, which moves dg/ds by up to 1e-6, and the calibration's adaptive substeps turn
-// such a change into one of 1e-6 in its objective (the delivered sets were fitted with it).
-// Elsewhere the two agree to round-off (tests/lode_willam_warnke_test.cpp).
+// min eig(u). With shear in the 1-2 plane only (a_12 != 0, a_13 = a_23 = 0: an MPM host's
+// states) that eigenvalue costs one square root instead of acos and cos, a tenth of a footing's
+// time (bench/RESULTS.md 1q), and is the more accurate near the meridians, where acos(s) of an s
+// rounded near -1 puts theta 1e-8 off. Other states take x from s as before: among them are the
+// element tests' diagonal states, which the delivered sets were fitted with, and the fit follows
+// even round-off changes of their results to another set (0.4 standard errors away, measured;
+// data/calibration/README.md). tests/lode_willam_warnke_test.cpp checks both paths.
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta, const Sym& a, double scale);
 
 // Its g alone, the same number, for the yield value (which has no use for dg/ds and its divisions).
