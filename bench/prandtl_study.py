@@ -6,6 +6,9 @@ scene of tests/mpm_footing_test.cpp). q = V/B averaged over S/B 0.02-0.05 agains
   - cells B/10, B/20, B/40 at 0.02 m/s (rough; smooth at B/10), with the extrapolated limits;
   - at B/10, the particle update (FLIP, XPIC every 100/20/5 steps, PIC) at 0.1 m/s and the
     loading speed (0.1, 0.02, 0.01 m/s) for the default XPIC and for PIC.
+  - at B/10 and 0.02 m/s, what sets the error: particles per cell, Poisson's ratio, stiffness
+    (E = 300 s_u, over S/B 0.10-0.15, past its later failure), the footing's edges a quarter and
+    half a cell off the nodes, the node-row footing, and the load further on (S/B 0.05-0.25).
 Writes OUT/prandtl.csv and OUT/prandtl.png (q over Prandtl against h/B). B/40 takes minutes.
 
   python3 bench/prandtl_study.py [--out DIR] [--threads N] [--tool PATH]
@@ -39,6 +42,31 @@ CASES = [
     ("pic_v001", 0.1, "rough", 0.01, "PIC", 20),
 ]
 
+# At B/10, rough, 0.02 m/s, XPIC every 20: name, what differs (scene keys), averaging window, stop.
+VARIANTS = [
+    ("ppc2_h010", {"bodies/0/particles_per_cell": 2}, (0.02, 0.05), 0.05),
+    ("ppc3_h010", {"bodies/0/particles_per_cell": 3}, (0.02, 0.05), 0.05),
+    ("nu0_h010", {"materials/clay/parameters/nu": 0.0}, (0.02, 0.05), 0.05),
+    ("nu049_h010", {"materials/clay/parameters/nu": 0.49}, (0.02, 0.05), 0.05),
+    ("E1000su_late_h010", {}, (0.10, 0.15), 0.15),
+    ("E300su_late_h010", {"materials/clay/parameters/E": 3000}, (0.10, 0.15), 0.15),
+    ("edge_quarter_off_h010", {"footing/centre_x": 2.025}, (0.02, 0.05), 0.05),
+    ("edge_half_off_h010", {"footing/centre_x": 2.05}, (0.02, 0.05), 0.05),
+    ("node_rows_h010", {"footing/contact": "node_rows"}, (0.02, 0.05), 0.05),
+    ("long_h010", {}, (0.05, 0.25), 0.25),
+]
+
+
+def with_changes(s, changes, stop):
+    for path, value in changes.items():
+        *parents, key = path.split("/")
+        node = s
+        for part in parents:
+            node = node[int(part)] if part.isdigit() else node[part]
+        node[key] = value
+    s["stop"]["S_over_B"] = stop
+    return s
+
 
 def scene(name, h, interface, speed, update, every):
     return {"name": name, "grid": {"cell_size": h},
@@ -64,25 +92,36 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     rows = []
-    for name, h, interface, speed, update, every in CASES:
+
+    def run(name, description, row, window):
         run_dir = os.path.join(a.out, name)
         record = os.path.join(run_dir, "load_settlement.csv")
         if not os.path.exists(record):
             path = os.path.join(a.out, name + ".json")
             with open(path, "w") as f:
-                json.dump(scene(name, h, interface, speed, update, every), f, indent=1)
+                json.dump(description, f, indent=1)
             print(f"== {name}", flush=True)
             done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
             if done.returncode != 0:
                 print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
-                continue
+                return
         S, q = read_curve(record)
-        qm = mean_q(S, q, 0.02, 0.05)
-        rows.append({"case": name, "h_over_B": h, "interface": interface, "speed_m_per_s": speed,
-                     "particle_update": update, "xpic_every": every if update == "XPIC" else "",
-                     "q_kPa": round(qm, 2), "q_over_prandtl": round(qm / PRANDTL, 4)})
-        print(f"{name:14s} h/B {h:<6} {interface:6s} {speed:5} m/s {update:4s}/{every:<3}  q {qm:6.2f} kPa  "
-              f"q/(2+pi)s_u {qm / PRANDTL:.3f}")
+        qm = mean_q(S, q, *window)
+        row.update({"S_over_B_window": f"{window[0]}-{window[1]}", "q_kPa": round(qm, 2),
+                    "q_over_prandtl": round(qm / PRANDTL, 4)})
+        rows.append(row)
+        print(f"{name:22s} {row['variant'] or ''} h/B {row['h_over_B']:<6} {row['interface']:6s} "
+              f"{row['speed_m_per_s']:5} m/s {row['particle_update']:4s}  q {qm:6.2f} kPa  q/(2+pi)s_u {qm / PRANDTL:.3f}")
+
+    for name, h, interface, speed, update, every in CASES:
+        run(name, scene(name, h, interface, speed, update, every),
+            {"case": name, "variant": "", "h_over_B": h, "interface": interface, "speed_m_per_s": speed,
+             "particle_update": update, "xpic_every": every if update == "XPIC" else ""}, (0.02, 0.05))
+    for name, changes, window, stop in VARIANTS:
+        variant = "; ".join(f"{k} = {v}" for k, v in changes.items()) or "as rough_h010"
+        run(name, with_changes(scene(name, 0.1, "rough", 0.02, "XPIC", 20), changes, stop),
+            {"case": name, "variant": variant, "h_over_B": 0.1, "interface": "rough", "speed_m_per_s": 0.02,
+             "particle_update": "XPIC", "xpic_every": 20}, window)
     with open(os.path.join(a.out, "prandtl.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()

@@ -147,9 +147,9 @@ TEST(FootingContact, NodeRowsJumpAtARowCrossingWhereContactDoesNot) {
 // The error is the discretisation's, first order in h: the contact force reaches the soil through
 // the nodes around the footing's base, so the soil is loaded as if the base sat a fraction of a
 // cell deeper, and the mechanism also shears the layer above that level beside the footing.
-// Measured (docs/mpm.md, "Verification"): rough +14.6 % at B/10, +8.9 % at B/20, +5.2 % at B/40;
+// Measured (docs/mpm.md, "Verification"): rough +14.7 % at B/10, +9.0 % at B/20, +5.1 % at B/40;
 // the limit extrapolated from B/10 and B/20 as for a first-order error, 2 q(B/20) - q(B/10), is
-// +3.2 %. Stated tolerances: never below Prandtl, at most +18 % at B/10 and +11 % at B/20, the
+// +3.3 %. Stated tolerances: never below Prandtl, at most +18 % at B/10 and +11 % at B/20, the
 // error at B/20 at most 0.7 of that at B/10, the extrapolated limit within 5 %.
 TEST(FootingContact, PrandtlBearingCapacityOnTrescaSoilConvergesFromAbove) {
   const double prandtl = (2 + pi) * 10.0;  // kPa
