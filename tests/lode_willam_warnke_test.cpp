@@ -95,8 +95,8 @@ TEST(WillamWarnke, AgreesWithThePapersFormInPrincipalStresses) {
   }
 }
 
-// The angle from a deviator's principal values (one square root where it has no out-of-plane
-// shear, src/lode.cpp) against the paper's form in extended precision at the angle the deviator
+// The angle from a deviator's principal values (one square root where its shear lies in the 1-2
+// plane only, src/lode.cpp) against the paper's form in extended precision at the angle the deviator
 // was built with: principal values -sqrt(2/3) cos(theta + 2 pi k/3), theta from the extension
 // meridian, in any order, turned about axis 3, scaled by either sign. (The sin 3theta path has
 // its theta up to 1e-8 off near the meridians, the acos of a number near -1.) Without in-plane
