@@ -119,7 +119,11 @@ AbiTiming time_abi(const acst_model* model, const Material& m, const Sequence& s
 
 int main(int argc, char** argv) {
   try {
-    const std::string out = bench::output_dir(argc, argv);
+    const std::string out = bench::output_dir(
+        argc, argv,
+        "usage: bench_stress_update [--help] [DIR]\n"
+        "Cost of one stress update per scheme (guide set, STOL 1e-4); writes DIR/stress_update.csv\n"
+        "(default DIR: <source>/bench/results).\n");
     const Material guide = bench::guide_material();
 
     // Plastic sequences: drained triaxial, 1000 x 1e-4 axial.
@@ -180,30 +184,36 @@ int main(int argc, char** argv) {
     std::printf("| scheme | ns/update elastic | ns/update plastic dense | ns/update plastic loose | substeps/update "
                 "(dense, loose) | rate evals/update (dense, loose) |\n");
     std::printf("|---|---:|---:|---:|---:|---:|\n");
-    std::FILE* csv = std::fopen((out + "/stress_update.csv").c_str(), "w");
-    std::fprintf(csv, "scheme,ns_elastic,ns_plastic_dense,ns_plastic_loose,substeps_dense,substeps_loose,evals_dense,"
-                      "evals_loose,evals_elastic,status\n");
+    bench::CsvTable csv(
+        "scheme,ns_elastic,ns_plastic_dense,ns_plastic_loose,substeps_dense,substeps_loose,evals_dense,evals_loose,"
+        "evals_elastic,status");
+    const auto tenth = [](double v) { return std::round(10.0 * v) / 10.0; };
+    const auto thousandth = [](double v) { return std::round(1000.0 * v) / 1000.0; };
     for (const Row& r : rows) {
       const bool ok = r.elastic.ok && r.dense.ok && r.loose.ok;
       std::printf("| %s | %.0f | %.0f | %.0f | %.2f, %.2f | %.2f, %.2f |%s\n", r.scheme.c_str(),
                   r.elastic.ns_per_update, r.dense.ns_per_update, r.loose.ns_per_update, r.dense.substeps_per_update,
                   r.loose.substeps_per_update, r.dense.evals_per_update, r.loose.evals_per_update,
                   ok ? "" : " FAILED CALLS");
-      std::fprintf(csv, "%s,%.1f,%.1f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%s\n", r.scheme.c_str(), r.elastic.ns_per_update,
-                   r.dense.ns_per_update, r.loose.ns_per_update, r.dense.substeps_per_update,
-                   r.loose.substeps_per_update, r.dense.evals_per_update, r.loose.evals_per_update,
-                   r.elastic.evals_per_update, ok ? "ok" : "failed");
+      csv.cell(r.scheme).cell(tenth(r.elastic.ns_per_update)).cell(tenth(r.dense.ns_per_update));
+      csv.cell(tenth(r.loose.ns_per_update)).cell(thousandth(r.dense.substeps_per_update));
+      csv.cell(thousandth(r.loose.substeps_per_update)).cell(thousandth(r.dense.evals_per_update));
+      csv.cell(thousandth(r.loose.evals_per_update)).cell(thousandth(r.elastic.evals_per_update));
+      csv.cell(ok ? "ok" : "failed").end_row();
     }
     const bool abi_ok = abi_el.ok && abi_dense.ok && abi_loose.ok && abi_dense_t.ok && abi_el_t.ok;
     std::printf("| C ABI acst_update, ME | %.0f | %.0f | %.0f | (as ME) | (as ME) |%s\n", abi_el.ns_per_update,
                 abi_dense.ns_per_update, abi_loose.ns_per_update, abi_ok ? "" : " FAILED CALLS");
     std::printf("| C ABI acst_update, ME, with tangent | %.0f | %.0f | - | (as ME) | (as ME) |\n",
                 abi_el_t.ns_per_update, abi_dense_t.ns_per_update);
-    std::fprintf(csv, "C_ABI_ME,%.1f,%.1f,%.1f,,,,,,%s\n", abi_el.ns_per_update, abi_dense.ns_per_update,
-                 abi_loose.ns_per_update, abi_ok ? "ok" : "failed");
-    std::fprintf(csv, "C_ABI_ME_tangent,%.1f,%.1f,,,,,,,%s\n", abi_el_t.ns_per_update, abi_dense_t.ns_per_update,
-                 abi_ok ? "ok" : "failed");
-    std::fclose(csv);
+    csv.cell("C_ABI_ME").cell(tenth(abi_el.ns_per_update)).cell(tenth(abi_dense.ns_per_update));
+    csv.cell(tenth(abi_loose.ns_per_update));
+    for (int k = 0; k < 6; ++k) csv.blank();
+    csv.cell(abi_ok ? "ok" : "failed").end_row();
+    csv.cell("C_ABI_ME_tangent").cell(tenth(abi_el_t.ns_per_update)).cell(tenth(abi_dense_t.ns_per_update));
+    for (int k = 0; k < 7; ++k) csv.blank();
+    csv.cell(abi_ok ? "ok" : "failed").end_row();
+    csv.publish(out + "/stress_update.csv");
     std::printf("\nC ABI end stress vs C++ end stress (relative): elastic %.1e, dense %.1e, loose %.1e\n",
                 abi_el.max_difference, abi_dense.max_difference, abi_loose.max_difference);
     const Row& me_row = rows[1];

@@ -13,6 +13,9 @@
 #include <vector>
 
 #include "acst/material.hpp"
+#include "acst_common/atomic_file.hpp"
+#include "acst_driver/number_format.hpp"
+#include "bench_args.hpp"
 #include "acst/yield_function.hpp"
 #include "acst_driver/mixed_control.hpp"
 #include "strain_path_replay.hpp"  // tests/support: the replayed strain paths the tests use too
@@ -34,12 +37,60 @@ inline const std::string& guide_json() {
 
 inline Material guide_material() { return Material::from_json(guide_json()); }
 
-// Output folder: argv[1] if given, else <source>/bench/results; created if missing.
-inline std::string output_dir(int argc, char** argv) {
-  const std::string dir = argc > 1 ? argv[1] : std::string(ACST_SOURCE_DIR) + "/bench/results";
+// Output folder: the command line's one argument if given, else <source>/bench/results; created if
+// missing. `usage` answers --help and follows a refused command line (bench_args.hpp).
+inline std::string output_dir(int argc, char** argv, const char* usage) {
+  const std::string dir =
+      command_line_argument(argc, argv, usage, true).value_or(std::string(ACST_SOURCE_DIR) + "/bench/results");
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+// A CSV table built in memory and published whole (common::AtomicFileWriter): a run that fails
+// half way leaves the previous table in place. Numbers as the element tests' CSV writes them (10
+// significant digits); text quoted where it holds a comma, a quote or a line break (quotes doubled).
+class CsvTable {
+ public:
+  explicit CsvTable(const std::string& header) : text_(header + "\n") {}
+  CsvTable& cell(double v) {
+    separate();
+    driver::append_number(text_, v);
+    return *this;
+  }
+  CsvTable& cell(const std::string& v) {
+    separate();
+    if (v.find_first_of(",\"\r\n") == std::string::npos) {
+      text_ += v;
+      return *this;
+    }
+    text_ += '"';
+    for (char c : v) text_ += c == '"' ? std::string("\"\"") : std::string(1, c);
+    text_ += '"';
+    return *this;
+  }
+  CsvTable& blank() {
+    separate();
+    return *this;
+  }
+  void end_row() {
+    text_ += '\n';
+    row_started_ = false;
+  }
+  // Throws std::runtime_error naming the file when it cannot be written.
+  void publish(const std::string& path) const {
+    common::AtomicFileWriter file(path);
+    file.write(text_);
+    file.commit();
+  }
+
+ private:
+  void separate() {
+    if (row_started_) text_ += ',';
+    row_started_ = true;
+  }
+  std::string text_;
+  bool row_started_ = false;
+};
 
 using test::drained_triaxial_strain_path;
 using test::isotropic_sample;

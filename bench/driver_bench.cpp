@@ -5,7 +5,7 @@
 // converged strain increments replayed through Material::update with tangent, scaled by the
 // Newton iterations per increment (every iteration makes one such call).
 //
-// Usage: driver_bench [repeats]   (default 51)
+// Usage: driver_bench [--help] [repeats]   (default 51)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "acst_driver/output.hpp"
+#include "bench_args.hpp"
 #include "acst_driver/runner.hpp"
 #include "acst_driver/scene.hpp"
 
@@ -36,7 +37,20 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
   namespace drv = acst::driver;
-  const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 51;
+  const char* usage =
+      "usage: driver_bench [--help] [REPEATS]\n"
+      "A 2000-increment drained triaxial test end to end, the median of REPEATS runs (1 to 100000, default 51).\n";
+  int repeats = 51;
+  if (const auto given = acst::bench::command_line_argument(argc, argv, usage, true)) {
+    char* end = nullptr;
+    const long n = std::strtol(given->c_str(), &end, 10);
+    if (end == given->c_str() || *end != '\0' || n < 1 || n > 100000) {
+      std::fprintf(stderr, "driver_bench: REPEATS must be a whole number from 1 to 100000, got '%s'\n%s", given->c_str(),
+                   usage);
+      return 2;
+    }
+    repeats = static_cast<int>(n);
+  }
   const fs::path dir = fs::temp_directory_path() / ("acst_driver_bench_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path scene_file = dir / "drained_tc_2000.json";

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "acst_mpm/scene.hpp"
+#include "bench_args.hpp"
 
 using namespace acst::mpm;
 
@@ -28,7 +29,12 @@ double particle_steps_per_s(const Scene& scene, int threads, int steps) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  acst::bench::command_line_argument(
+      argc, argv,
+      "usage: mpm_bench [--help]\n"
+      "MPM particle-steps per second on the Kimura V85.6 scene, elastic kernel and ACST, 1 and 2 threads.\n",
+      false);
   const std::string path = std::string(ACST_SOURCE_DIR) + "/data/scenes/mpm/kimura_V85.6_alpha0.json";
   std::ifstream in(path);
   std::stringstream ss;
