@@ -355,6 +355,50 @@ TEST(SweepRun, AKilledSweepResumesToTheSameTable) {
             acst::common::read_input_file((fs::path(straight) / "cases/bedding_0/load_settlement.csv").string()));
 }
 
+namespace {
+
+// Records the order in which a sweep hands its cases out to `n` workers, and runs none of them.
+class RecordingWorkers : public CaseDistributor {
+ public:
+  explicit RecordingWorkers(int n) : n_(n) {}
+  bool coordinator() const override { return true; }
+  int workers() const override { return n_; }
+  bool all(bool ok) override { return ok; }
+  void distribute(const std::vector<std::size_t>& pending, const RunOne&, const Finished&) override { order = pending; }
+  std::vector<std::size_t> order;
+
+ private:
+  int n_;
+};
+
+}  // namespace
+
+// Over several workers the longest case goes first (so that no worker idles at the end while
+// another runs a long case); in turn the cases run as listed. Length: particles times steps, here
+// set by the stop (0.02, 0.06, 0.04 of B) and by the half domain (half the particles).
+TEST(SweepRun, SeveralWorkersGetTheLongestCasesFirst) {
+  const fs::path dir = acst::test::scratch_folder("sweep_order");
+  const std::string cases = R"([
+      {"name": "short", "set": {"/stop/S_over_B": 0.02}},
+      {"name": "long", "set": {"/stop/S_over_B": 0.06}},
+      {"name": "middle", "set": {"/stop/S_over_B": 0.04}},
+      {"name": "long_half", "set": {"/stop/S_over_B": 0.06, "/footing/symmetric_half": true}}])";
+  const SweepSpec spec = parse_sweep(description(cases), dir.string());
+  ASSERT_EQ(spec.cases.size(), 4u);
+  for (int workers : {1, 2}) {
+    RecordingWorkers where(workers);
+    SweepRunOptions opt;
+    opt.output_dir = (dir / ("out_" + std::to_string(workers))).string();
+    opt.plot = false;
+    opt.quiet = true;
+    std::ostringstream out, err;
+    EXPECT_EQ(run_sweep(spec, opt, where, out, err), 1) << err.str();  // none ran
+    const std::vector<std::size_t> expected =
+        workers == 1 ? std::vector<std::size_t>{0, 1, 2, 3} : std::vector<std::size_t>{1, 2, 3, 0};
+    EXPECT_EQ(where.order, expected) << workers << " workers";
+  }
+}
+
 // The left/right measures of the table, on four particles whose answer is known: areas count by
 // where a particle started and only above the shear-strain limit; heave is the largest rise.
 TEST(SideMeasures, CountEachSideByWhereItsParticlesStarted) {

@@ -39,6 +39,10 @@ double run_time(const Scene& s, double first_time_step) {
   return static_cast<double>(*s.stop.steps) * first_time_step;
 }
 
+double expected_steps(const Scene& s, double dt) {
+  return s.stop.steps ? static_cast<double>(*s.stop.steps) : std::ceil(run_time(s, dt) / dt);
+}
+
 std::string stop_path(const Scene& s) {
   if (s.stop.time) return "/stop/time";
   if (s.stop.S_over_B) return "/stop/S_over_B";
@@ -130,8 +134,10 @@ void check_scene_size(const Scene& s) {
   check_memory(s, size, "/stop/steps");
 }
 
+double expected_particle_steps(const Scene& s, double dt) { return scene_size(s, 0.0).particles * expected_steps(s, dt); }
+
 void check_run_length(const Scene& s, double dt) {
-  const double time = run_time(s, dt), steps = s.stop.steps ? static_cast<double>(*s.stop.steps) : std::ceil(time / dt);
+  const double time = run_time(s, dt), steps = expected_steps(s, dt);
   const std::string why = " (" + f::shown(time) + " s of soil time at a first time step of " + f::shown(dt) +
                           " s, set by /grid/cell_size, /solver/cfl and the soil's wave speed)";
   if (!(steps <= max_steps))

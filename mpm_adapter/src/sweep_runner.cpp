@@ -1,5 +1,6 @@
 #include "acst_mpm/sweep_runner.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <ostream>
@@ -11,6 +12,8 @@
 #include "acst_common/one_line.hpp"
 #include "acst_common/progress.hpp"
 #include "acst_common/result_folder.hpp"
+#include "acst_mpm/scene.hpp"
+#include "acst_mpm/scene_size.hpp"
 #include "acst_mpm/sweep_case.hpp"
 #include "acst_mpm/sweep_table.hpp"
 
@@ -49,24 +52,41 @@ std::string first_difference(const json& then, const json& now) {
 
 // What the reader cannot see in a scene alone (a followed particle outside the soil, a material
 // that refuses its start) shows when its simulation is built: each case to run is built once
-// here, so that such a case stops the sweep before anything runs, not hours into it.
-void check_buildable(const SweepSpec& sweep, const std::vector<std::size_t>& pending) {
+// here, so that such a case stops the sweep before anything runs, not hours into it. Returns each
+// case's expected work in particle-steps (index as in the sweep; 0 for the cases not to run).
+std::vector<double> check_buildable(const SweepSpec& sweep, const std::vector<std::size_t>& pending) {
   std::string problems;
+  std::vector<double> work(sweep.cases.size(), 0.0);
   for (std::size_t i : pending) {
     try {
-      build_simulation(sweep.cases[i].scene);
+      const Simulation sim = build_simulation(sweep.cases[i].scene);
+      work[i] = expected_particle_steps(sweep.cases[i].scene, sim.stable_time_step());
     } catch (const std::exception& e) {
       problems += "\n  case '" + sweep.cases[i].name + "' (" + sweep.cases[i].origin + "): " + e.what();
     }
   }
   if (!problems.empty()) throw common::InputError("cases that cannot start:" + problems);
+  return work;
 }
 
 struct Plan {
   std::vector<ordered_json> rows;
   std::vector<std::size_t> pending;
+  std::vector<double> work;  // expected particle-steps per case (check_buildable)
   std::size_t skipped = 0;
 };
+
+// The order cases are handed out in. In turn: as the sweep lists them. Over several workers:
+// the longest first, so that the last case to start is a short one and no worker idles long at
+// the end while another finishes a long case (the 27 cases of the reference study are a third
+// half-domain runs of about half the others' length).
+std::vector<std::size_t> hand_out_order(const Plan& plan, int workers) {
+  std::vector<std::size_t> order = plan.pending;
+  if (workers > 1)
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return plan.work[a] > plan.work[b]; });
+  return order;
+}
 
 // Which cases have run (kept as they are), and which are to run.
 Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
@@ -96,7 +116,7 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
       ++plan.skipped;
     }
   }
-  check_buildable(sweep, plan.pending);
+  plan.work = check_buildable(sweep, plan.pending);
   return plan;
 }
 
@@ -163,10 +183,13 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
                     std::to_string(plan.skipped) + " already run (kept), " + std::to_string(plan.pending.size()) +
                     " to run on " + std::to_string(where.workers()) + " worker" + (where.workers() > 1 ? "s" : ""));
   std::size_t ended = 0;
+  double work_total = 0.0, work_ended = 0.0;  // the time left goes by the expected work, not the case count
+  for (std::size_t i : plan.pending) work_total += plan.work[i];
   std::vector<std::string> warnings;
-  where.distribute(plan.pending, run_one, [&](std::size_t i, const std::string& row_text) {
+  where.distribute(hand_out_order(plan, where.workers()), run_one, [&](std::size_t i, const std::string& row_text) {
     plan.rows[i] = ordered_json::parse(row_text);
     ++ended;
+    work_ended += plan.work[i];
     try {
       gather(sweep, plan.rows, opt);
     } catch (const std::exception& e) {
@@ -176,7 +199,8 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
       progress.finish("[" + std::to_string(ended) + "/" + std::to_string(plan.pending.size()) + "] " +
                       finished_line(sweep.cases[i], plan.rows[i]) + "; " + common::duration_text(progress.elapsed_s()) +
                       " elapsed, " +
-                      common::ProgressLine::time_left(progress.elapsed_s(), double(ended) / double(plan.pending.size())));
+                      common::ProgressLine::time_left(progress.elapsed_s(), work_total > 0.0 ? work_ended / work_total
+                                                                                            : double(ended) / double(plan.pending.size())));
   });
   if (sweep.figures && opt.plot)
     for (const std::string& w : write_group_figures(sweep, plan.rows, opt.output_dir)) warnings.push_back(w);

@@ -51,4 +51,9 @@ void check_scene_size(const Scene& scene);
 // frames it writes and the memory with its load record. Throws common::InputError.
 void check_run_length(const Scene& scene, double first_time_step);
 
+// The run's expected work in particle-steps at its first time step: how a sweep ranks its cases
+// by length (the time step shrinks as the soil under a footing stiffens, much alike in cases of
+// one study).
+double expected_particle_steps(const Scene& scene, double first_time_step);
+
 }  // namespace acst::mpm
