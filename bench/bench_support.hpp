@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "acst/material.hpp"
-#include "acst_common/atomic_file.hpp"
+#include "acst_common/files.hpp"
 #include "acst_driver/number_format.hpp"
 #include "bench_args.hpp"
 #include "acst/yield_function.hpp"
@@ -46,7 +46,7 @@ inline std::string output_dir(int argc, char** argv, const char* usage) {
   return dir;
 }
 
-// A CSV table built in memory and published whole (common::AtomicFileWriter): a run that fails
+// A CSV table built in memory and published whole (common::write_file_atomically): a run that fails
 // half way leaves the previous table in place. Numbers as the element tests' CSV writes them (10
 // significant digits); text quoted where it holds a comma, a quote or a line break (quotes doubled).
 class CsvTable {
@@ -77,11 +77,7 @@ class CsvTable {
     row_started_ = false;
   }
   // Throws std::runtime_error naming the file when it cannot be written.
-  void publish(const std::string& path) const {
-    common::AtomicFileWriter file(path);
-    file.write(text_);
-    file.commit();
-  }
+  void publish(const std::string& path) const { common::write_file_atomically(path, text_); }
 
  private:
   void separate() {

@@ -158,9 +158,7 @@ void write_gnuplot(const std::string& dir, const std::vector<Panel>& panels, con
     }
     appendf(gp, "unset multiplot\n");
   }
-  common::AtomicFileWriter file(dir + "/work_precision.gp");
-  file.write(gp);
-  file.commit();
+  common::write_file_atomically(dir + "/work_precision.gp", gp);
 }
 
 }  // namespace

@@ -129,8 +129,9 @@ TEST(WillamWarnke, AngleFromPrincipalValuesAgreesWithExtendedPrecision) {
     const L dg_ds = willam_warnke_radius_slope<L>(1, c, theta) / (-3 * std::sin(3 * theta));
     EXPECT_NEAR(got.g, static_cast<double>(g), 1e-14) << "i " << i;
     // Within x - 1/2 < 1e-6 of compression dg/ds is a two-term expansion: its truncation reaches
-    // 4e-8 at c = 0.55 (as in DerivativeAtCompressionAgreesWithExtendedPrecision).
-    EXPECT_NEAR(got.dg_ds, static_cast<double>(dg_ds), 1e-7 * std::abs(static_cast<double>(dg_ds))) << "i " << i;
+    // 4e-8 at c = 0.55 (as in DerivativeAtCompressionAgreesWithExtendedPrecision); elsewhere 1e-9.
+    const double dg_ds_tolerance = std::cos(theta) - L(0.5) < 1.1e-6 ? 1e-7 : 1e-9;
+    EXPECT_NEAR(got.dg_ds, static_cast<double>(dg_ds), dg_ds_tolerance * std::abs(static_cast<double>(dg_ds))) << "i " << i;
   }
   for (const acst::Sym& a : {acst::Sym((acst::Sym() << 0.3, -0.1, -0.2, 0.05, 0.02, 0.0).finished()),
                              acst::Sym((acst::Sym() << 0.3, -0.1, -0.2, 0.0, 0.0, 0.0).finished())}) {
