@@ -194,4 +194,96 @@ TEST(CAbiRotation, ReferenceMaterialsRotateTheirStress) {
   EXPECT_NEAR(eps_b[0], eps_a[0], 1e-12 * eps_a[0]);
 }
 
+// acst_update_rotated promises the numbers of acst_rotate_state followed by acst_update (the
+// same arithmetic in one call), so the two routes are compared bit for bit, with the tangent
+// and the counters, along a loading, unloading and reversing path for every kind.
+TEST(CAbiRotation, UpdateRotatedGivesTheTwoCallsNumbersBitForBit) {
+  const std::string kinds[] = {calibrated_acst(), R"({"model": "linear_elastic", "parameters": {"E": 20000, "nu": 0.25}})",
+                               R"({"model": "von_mises", "parameters": {"E": 20000, "nu": 0.25, "yield_stress": 90}})"};
+  for (const std::string& kind : kinds) {
+    AbiModel m(kind);
+    const int n = acst_state_size(m.get());
+    SandPoint two, one;
+    two.statev.resize(n);
+    const bool sand = std::string(acst_model_kind(m.get())) == "ACST";
+    const double scale = sand ? 1.0 : 20.0;  // the reference kinds' yield stress is reached by 2e-3
+    if (sand) {
+      two = loaded_sand_point(m.get());
+    } else {
+      const double s0[6] = {-100, -70, -40, 15, -8, 5};
+      ASSERT_EQ(acst_initial_state(two.statev.data(), two.stress.data(), m.get(), s0, 0.0, nullptr).code, ACST_OK);
+    }
+    one = two;
+    int plastic = 0;
+    for (int k = 0; k < 30; ++k) {
+      const RowMajor3 Q = Eigen::AngleAxisd(0.002 * (k + 1), Eigen::Vector3d(0.2 * k, 1.0, -0.5).normalized()).toRotationMatrix();
+      double d[6] = {-1e-4, 2e-5 * std::cos(0.3 * k), 3e-5, 6e-5 * std::sin(0.2 * k), -2e-5, 4e-5};
+      for (double& v : d) v *= k >= 20 ? -0.5 * scale : scale;  // unload and reverse from step 20
+      double D_two[36], D_one[36];
+      acst_counters c_two, c_one;
+      ASSERT_EQ(acst_rotate_state(two.stress.data(), two.statev.data(), m.get(), Q.data()).code, ACST_OK);
+      ASSERT_EQ(acst_update(two.stress.data(), two.statev.data(), D_two, &c_two, m.get(), d).code, ACST_OK);
+      const acst_status st = acst_update_rotated(one.stress.data(), one.statev.data(), D_one, &c_one, m.get(), Q.data(), d);
+      ASSERT_EQ(st.code, ACST_OK) << st.message;
+      plastic += c_one.plastic;
+      for (int i = 0; i < 6; ++i) ASSERT_EQ(one.stress[i], two.stress[i]) << acst_model_kind(m.get()) << " step " << k;
+      for (int i = 0; i < n; ++i) ASSERT_EQ(one.statev[i], two.statev[i]) << acst_model_kind(m.get()) << " step " << k;
+      for (int i = 0; i < 36; ++i) ASSERT_EQ(D_one[i], D_two[i]) << acst_model_kind(m.get()) << " step " << k;
+      EXPECT_EQ(c_one.substeps_accepted, c_two.substeps_accepted);
+      EXPECT_EQ(c_one.rate_evaluations, c_two.rate_evaluations);
+      EXPECT_EQ(c_one.plastic, c_two.plastic);
+    }
+    if (std::string(acst_model_kind(m.get())) != "linear_elastic") {
+      EXPECT_GT(plastic, 10) << acst_model_kind(m.get()) << ": the path must exercise the plastic update";
+    }
+  }
+}
+
+// A failed update leaves the state as it came, unrotated; an invalid rotation or a missing
+// pointer is refused before anything is computed.
+TEST(CAbiRotation, UpdateRotatedChangesNothingWhenItFails) {
+  AbiModel m(calibrated_acst());
+  SandPoint p = loaded_sand_point(m.get());
+  const SandPoint before = p;
+  const RowMajor3 proper = general_rotation;
+  acst_counters c;
+
+  const double too_large[6] = {-0.2, -0.2, -0.2, 0.0, 0.0, 0.0};  // 60 % compression: e < 0
+  const double not_finite[6] = {-1e-4, NAN, 0.0, 0.0, 0.0, 0.0};
+  const acst_status big = acst_update_rotated(p.stress.data(), p.statev.data(), nullptr, &c, m.get(), proper.data(), too_large);
+  EXPECT_EQ(big.code, ACST_STEP_REDUCTION);
+  EXPECT_GT(std::string(big.message).size(), 0u);
+  EXPECT_EQ(p.stress, before.stress);
+  EXPECT_EQ(p.statev, before.statev);
+  EXPECT_EQ(acst_update_rotated(p.stress.data(), p.statev.data(), nullptr, &c, m.get(), proper.data(), not_finite).code,
+            ACST_INVALID_INPUT);
+  EXPECT_EQ(p.stress, before.stress);
+
+  const double d[6] = {-1e-4, 0, 0, 0, 0, 0};
+  SandPoint bad_state = p;
+  bad_state.statev[6] = -0.2;  // void ratio out of range: not physical before or after a rotation
+  const acst_status bad =
+      acst_update_rotated(bad_state.stress.data(), bad_state.statev.data(), nullptr, &c, m.get(), proper.data(), d);
+  EXPECT_EQ(bad.code, ACST_NONPHYSICAL_STATE) << bad.message;
+  EXPECT_EQ(bad_state.stress, before.stress);
+
+  const RowMajor3 stretched = 1.001 * proper;
+  const RowMajor3 reflection = Eigen::Vector3d(1, 1, -1).asDiagonal();
+  for (const RowMajor3* Q : {&stretched, &reflection}) {
+    const acst_status st = acst_update_rotated(p.stress.data(), p.statev.data(), nullptr, &c, m.get(), Q->data(), d);
+    EXPECT_EQ(st.code, ACST_INVALID_INPUT);
+    EXPECT_NE(std::string(st.message).find("acst_update_rotated: rotation must be a finite proper orthogonal"),
+              std::string::npos)
+        << st.message;
+  }
+  EXPECT_EQ(acst_update_rotated(p.stress.data(), nullptr, nullptr, &c, m.get(), proper.data(), d).code, ACST_INVALID_INPUT);
+  EXPECT_EQ(acst_update_rotated(p.stress.data(), p.statev.data(), nullptr, &c, m.get(), nullptr, d).code, ACST_INVALID_INPUT);
+  EXPECT_EQ(acst_update_rotated(p.stress.data(), p.statev.data(), nullptr, &c, m.get(), proper.data(), nullptr).code,
+            ACST_INVALID_INPUT);
+  EXPECT_EQ(acst_update_rotated(p.stress.data(), p.statev.data(), nullptr, &c, nullptr, proper.data(), d).code,
+            ACST_INVALID_INPUT);
+  EXPECT_EQ(p.stress, before.stress);
+  EXPECT_EQ(p.statev, before.statev);
+}
+
 }  // namespace

@@ -310,6 +310,23 @@ static void test_bad_inputs(const acst_model* model, const char* json, const dou
   EXPECT_FAILURE(acst_update(stress, statev, NULL, NULL, model, NULL), ACST_INVALID_INPUT, "NULL strain");
   EXPECT_UNTOUCHED("NULL strain");
 
+  /* The same refusals from the turned update, and a NaN stress stays unturned. */
+  {
+    const double turn[9] = {0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1};
+    EXPECT_FAILURE(acst_update_rotated(stress, statev, tangent, NULL, model, turn, nan_strain), ACST_INVALID_INPUT,
+                   "turned update, NaN strain");
+    EXPECT_UNTOUCHED("turned update, NaN strain");
+    EXPECT_FAILURE(acst_update_rotated(stress, statev, NULL, NULL, model, NULL, good_strain), ACST_INVALID_INPUT,
+                   "turned update, NULL rotation");
+    EXPECT_UNTOUCHED("turned update, NULL rotation");
+    stress[1] = NAN;
+    EXPECT_FAILURE(acst_update_rotated(stress, statev, NULL, NULL, model, turn, good_strain), ACST_NONPHYSICAL_STATE,
+                   "turned update, NaN stress");
+    CHECK(isnan(stress[1]) && stress[0] == stress_in[0] && stress[3] == stress_in[3],
+          "turned update, NaN stress: stress changed on failure");
+    memcpy(stress, stress_in, sizeof stress);
+  }
+
   /* Non-physical entry state: NaN stress, negative void ratio. */
   stress[1] = NAN;
   {

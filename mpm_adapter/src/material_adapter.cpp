@@ -17,6 +17,13 @@ void check(const acst_status& st, const std::string& what) {
   if (st.code != ACST_OK) throw MaterialError(what + ": " + st.message);
 }
 
+// The update ended on a reset to the pressure floor: a reset leaves the stress exactly
+// isotropic; strain after it in the same call would not.
+bool reset_to_floor(const double* stress, const acst_counters& counters) {
+  return counters.pressure_floor_resets > 0 && stress[0] == stress[1] && stress[1] == stress[2] && stress[3] == 0.0 &&
+         stress[4] == 0.0 && stress[5] == 0.0;
+}
+
 }  // namespace
 
 Material::Material(const std::string& name, const std::string& json_text)
@@ -74,12 +81,18 @@ acst_status Material::update(double* stress, double* statev, const double* L, do
   stress_free = false;
   const PlaneRotation r = hughes_winget_rotation(L, dt);
   const double Q[9] = {r.c, r.s, 0.0, -r.s, r.c, 0.0, 0.0, 0.0, 1.0};
-  acst_status st = acst_rotate_state(stress, statev, model_.get(), Q);
-  if (st.code != ACST_OK) return st;
   // Plane strain: eps_zz = 0; ABI strain is tension positive with engineering shear.
   const double de[6] = {L[0] * dt, L[3] * dt, 0.0, (L[1] + L[2]) * dt, 0.0, 0.0};
   acst_counters counters{};
-  st = acst_update(stress, statev, nullptr, &counters, model_.get(), de);
+  // Turned and updated in one call, the common case. A failure leaves the state as it came: the
+  // rare retry turns it on its own and subdivides the increment (the numbers of the two calls).
+  acst_status st = acst_update_rotated(stress, statev, nullptr, &counters, model_.get(), Q, de);
+  if (st.code == ACST_OK) {
+    stress_free = reset_to_floor(stress, counters);
+    return st;
+  }
+  if (const acst_status turned = acst_rotate_state(stress, statev, model_.get(), Q); turned.code != ACST_OK)
+    return turned;
   for (int parts = 2; st.code == ACST_STEP_REDUCTION && parts <= 64; parts *= 2) {
     double part[6];
     for (int k = 0; k < 6; ++k) part[k] = de[k] / parts;
@@ -93,9 +106,7 @@ acst_status Material::update(double* stress, double* statev, const double* L, do
       std::memcpy(statev, q_try, sizeof(double) * static_cast<size_t>(state_size_));
     }
   }
-  // A reset leaves the stress exactly isotropic; strain after it in the same call would not.
-  stress_free = st.code == ACST_OK && counters.pressure_floor_resets > 0 && stress[0] == stress[1] &&
-                stress[1] == stress[2] && stress[3] == 0.0 && stress[4] == 0.0 && stress[5] == 0.0;
+  stress_free = st.code == ACST_OK && reset_to_floor(stress, counters);
   if (st.code != ACST_OK && reproducer) {
     size_t length = 0;
     reproducer->clear();

@@ -118,11 +118,19 @@ double Simulation::stable_time_step() const {
   const bool contact = boundaries_.footing.uses_contact();
   const double width = 2.0 * particle_half_width_ * grid_.h;  // the longest contact of one particle
   const double c_contact = stiffest_wave_speed();
-  double fastest = 0.0, omega = 0.0;
-  for (std::size_t p = 0; p < P.n; ++p) {
-    fastest = std::max(fastest, P.wave_speed[p] * scale + std::hypot(P.vx[p], P.vy[p]));
-    if (contact) omega = std::max(omega, std::sqrt(contact_stiffness(p, c_contact) * width / P.mass[p]));
-  }
+  // Every step, so over the threads; a maximum is the same in any order. omega^2's maximum
+  // gives omega's (the square root is monotonic and correctly rounded) at one root per step.
+  struct alignas(64) Largest {  // one cache line per thread
+    double fastest = 0.0, omega2 = 0.0;
+  };
+  std::vector<Largest> of(work_.scatter.threads());
+  parallel_for(work_.scatter.threads(), P.n, [&](int t, std::size_t p) {
+    of[t].fastest = std::max(of[t].fastest, P.wave_speed[p] * scale + std::hypot(P.vx[p], P.vy[p]));
+    if (contact) of[t].omega2 = std::max(of[t].omega2, contact_stiffness(p, c_contact) * width / P.mass[p]);
+  });
+  double fastest = 0.0, omega2 = 0.0;
+  for (const Largest& m : of) fastest = std::max(fastest, m.fastest), omega2 = std::max(omega2, m.omega2);
+  const double omega = std::sqrt(omega2);
   if (!(fastest > 0.0) || !std::isfinite(fastest))
     throw SimulationError("step " + std::to_string(clock_.step) + ": no finite wave speed for the time step");
   double dt = settings_.cfl * grid_.h / fastest;
@@ -426,13 +434,15 @@ void Simulation::internal_force_and_reactions() {
   w.fy_body = w.fy;
   fold(w.fx.data(), FieldKind::x);
   fold(w.fy.data(), FieldKind::y);
+  const Walls::Lines wall_lines = boundaries_.walls.lines(grid_);
   for (std::size_t i = 0; i < N; ++i) {
     if (w.mass[i] <= 0.0) {
       w.ax[i] = w.ay[i] = 0.0;
       continue;
     }
     const double share = w.mass_body[i] / w.mass[i];
-    const int wall = boundaries_.walls.wall_of(static_cast<int>(i % grid_.nx), static_cast<int>(i / grid_.nx), grid_);
+    const int wall =
+        boundaries_.walls.wall_of(static_cast<int>(i % grid_.nx), static_cast<int>(i / grid_.nx), wall_lines);
     if (wall != free_node) {
       reaction_[wall].fx += share * w.fx[i] - w.fx_body[i];
       reaction_[wall].fy += share * w.fy[i] - w.fy_body[i];

@@ -41,10 +41,14 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
   }
 }
 
-int Walls::wall_of(int i, int j, const Grid& grid) const {
-  if (base_fixed && j <= wall_node(base, grid.y0, grid.h) + 2) return reaction_base;
-  if (left_side != SideWall::none && i <= wall_node(left, grid.x0, grid.h) + 2) return reaction_left;
-  if (right_side != SideWall::none && i >= wall_node(right, grid.x0, grid.h) - 2) return reaction_right;
+Walls::Lines Walls::lines(const Grid& grid) const {
+  return {wall_node(left, grid.x0, grid.h), wall_node(right, grid.x0, grid.h), wall_node(base, grid.y0, grid.h)};
+}
+
+int Walls::wall_of(int i, int j, const Lines& at) const {
+  if (base_fixed && j <= at.base + 2) return reaction_base;
+  if (left_side != SideWall::none && i <= at.left + 2) return reaction_left;
+  if (right_side != SideWall::none && i >= at.right - 2) return reaction_right;
   return free_node;
 }
 

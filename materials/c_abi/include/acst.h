@@ -112,7 +112,7 @@ acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst
  * tangent (36 doubles) and counters are optional (NULL). On any failure stress and statev are
  * left unchanged. The verification kinds return the elastic matrix or the consistent
  * elastoplastic tangent of the radial return, and zero counters except plastic (1 if von_mises
- * yielded). Hosts with large rotations call acst_rotate_state first. */
+ * yielded). Hosts with large rotations call acst_rotate_state first, or acst_update_rotated. */
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain);
 
@@ -146,6 +146,14 @@ const char* acst_diagnostic_name(int i);
  * e.g. Hughes-Winget Q = (I - W/2)^-1 (I + W/2) with W = dt skew(L), L the velocity gradient,
  * then update with the strain increment dt sym(L) (engineering shear). */
 acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation);
+
+/* acst_rotate_state and then acst_update in one call, with their numbers: the state turned by
+ * rotation, then updated over dstrain (given in the turned frame). On any failure stress and
+ * statev are left as they came, unrotated: the host retries from its own state (or turns it with
+ * acst_rotate_state and subdivides dstrain). OK vouches for the updated state as acst_update's
+ * does; the rotated intermediate is never handed out, so it is not checked on its own. */
+acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                const acst_model* model, const double* rotation, const double* dstrain);
 
 /* Reproducers: the element-test scene (JSON text, docs/element-tests.md) that replays one
  * update with `acst_element FILE`: the material written out in full, the whole state, the

@@ -18,8 +18,13 @@ struct Walls {
   // back to the exterior nodes. An odd velocity component is zero on the wall; a smooth wall
   // keeps the tangential component even.
   void fold(double* field, FieldKind kind, const Grid& grid) const;
+  // The walls' grid lines as node indices, looked up once per sweep over the nodes.
+  struct Lines {
+    int left, right, base;
+  };
+  Lines lines(const Grid& grid) const;
   // The wall whose mirror image acts on node (i, j) (those within the stencil's reach), or free_node.
-  int wall_of(int i, int j, const Grid& grid) const;
+  int wall_of(int i, int j, const Lines& at) const;
 };
 
 }  // namespace acst::mpm
