@@ -85,14 +85,17 @@ acst_status Material::update(double* stress, double* statev, const double* L, do
   const double de[6] = {L[0] * dt, L[3] * dt, 0.0, (L[1] + L[2]) * dt, 0.0, 0.0};
   acst_counters counters{};
   // Turned and updated in one call, the common case. A failure leaves the state as it came: the
-  // rare retry turns it on its own and subdivides the increment (the numbers of the two calls).
+  // rare retry turns it on its own, updates it again and subdivides the increment (the numbers
+  // of the two calls). Every return is `st`, so the status is built where the caller keeps it.
   acst_status st = acst_update_rotated(stress, statev, nullptr, &counters, model_.get(), Q, de);
   if (st.code == ACST_OK) {
     stress_free = reset_to_floor(stress, counters);
     return st;
   }
-  if (const acst_status turned = acst_rotate_state(stress, statev, model_.get(), Q); turned.code != ACST_OK)
-    return turned;
+  st = acst_rotate_state(stress, statev, model_.get(), Q);
+  if (st.code != ACST_OK) return st;
+  counters = acst_counters{};
+  st = acst_update(stress, statev, nullptr, &counters, model_.get(), de);
   for (int parts = 2; st.code == ACST_STEP_REDUCTION && parts <= 64; parts *= 2) {
     double part[6];
     for (int k = 0; k < 6; ++k) part[k] = de[k] / parts;
