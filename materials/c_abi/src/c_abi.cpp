@@ -231,8 +231,8 @@ acst_status acst_update_rotated(double* stress, double* statev, double* tangent,
   ACST_GUARD({
     // The rotated copies go straight to the update, whose entry checks refuse what is not finite
     // or not physical and whose OK vouches for what it returns: the rotated state is never handed
-    // out, so acst_rotate_state's own check of it (a third of the glue's cost on an MPM step,
-    // bench/RESULTS.md 1s) is not needed. The numbers are those of the two calls.
+    // out, so acst_rotate_state's own check of it and its copies back are not needed (with them,
+    // 3-4 % of an MPM step, bench/RESULTS.md 1s). The numbers are those of the two calls.
     double s[6], q[ACST_NSTATV];
     rotated_copy(*model, stress, statev, Q, s, q);
     acst::integration::Report rep;

@@ -1,8 +1,8 @@
 #pragma once
 // The adapter between the MPM core and the material library: it reaches the material ONLY
 // through the C ABI (acst.h). Per particle it turns the velocity gradient into a strain
-// increment and an incremental rotation, and rotates stress and fabric objectively
-// (Hughes-Winget) and updates them in one call, acst_update_rotated. The MPM core stores stress in the ABI's
+// increment and an incremental rotation, and turns stress and fabric objectively (Hughes-Winget)
+// and updates them in one call, acst_update_rotated. The MPM core stores stress in the ABI's
 // convention (tension positive, Voigt xx yy zz xy xz yz, kPa): no conversion happens here.
 #include <memory>
 #include <stdexcept>
