@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Cell-size convergence study of the Kimura footings (docs/mpm.md, "Convergence").
+"""Cell-size convergence study of the Kimura footings (docs/mpm.md, "The Kimura footings with the
+contact footing", "Cell size"; results in bench/results/footing_convergence/).
 
 Runs each scene with acst_mpm (skipping those whose summary.json already exists, so the study
-can be resumed), then writes OUT/convergence.csv (q_ult, S_ult/B, load at S/B 0.5, wall time per
-run) and one overlay figure per lab test (OUT/<test>_curves.png) with the Kimura data.
+can be resumed), then writes OUT/convergence.csv (q_ult and S_ult/B, the first peak, the peak of
+q averaged over S/B +- 0.005, the load at S/B 0.5, steps and wall time per run) and one overlay
+figure per lab test (OUT/<test>_curves.png) with the Kimura data.
 
   python3 bench/footing_convergence.py [--out DIR] [--threads N] [--only NAME,NAME...]
 """
