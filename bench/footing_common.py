@@ -8,13 +8,16 @@ import subprocess
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def study_arguments(doc, out_name, only_help):
-    """The command line of a study that runs acst_mpm cases: --out, --threads, --only, --tool."""
+def study_arguments(doc, out_name, only_help, switches=()):
+    """The command line of a study that runs acst_mpm cases: --out, --threads, --only, --tool, and
+    the study's own on/off `switches`, (flag, help) pairs."""
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "results", out_name))
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--only", default="", help=only_help)
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    for flag, text in switches:
+        ap.add_argument(flag, action="store_true", help=text)
     return ap.parse_args()
 
 

@@ -4,11 +4,15 @@
 A rigid strip (B = 1 m) on weightless Tresca soil (4 B x 2 B, s_u = 10 kPa, E = 1000 s_u; the
 scene of tests/mpm_footing_test.cpp). q = V/B averaged over S/B 0.02-0.05 against (2 + pi) s_u:
   - cells B/10, B/20, B/40 at 0.02 m/s (rough; smooth at B/10), with the extrapolated limits;
+  - the same cells, rough and smooth, with the grid's rows following the footing's base
+    (grid/follow_footing; docs/mpm.md, "The grid follows the footing");
   - at B/10, the particle update (FLIP, XPIC every 100/20/5 steps, PIC) at 0.1 m/s and the
     loading speed (0.1, 0.02, 0.01 m/s) for the default XPIC and for PIC.
   - at B/10 and 0.02 m/s, what sets the error: particles per cell, Poisson's ratio, stiffness
     (E = 300 s_u, over S/B 0.10-0.15, past its later failure), the footing's edges a quarter and
-    half a cell off the nodes, the node-row footing, and the load further on (S/B 0.05-0.25).
+    half a cell off the nodes, the node-row footing, and the load further on (S/B 0.05-0.25);
+    with the rows following: Coulomb friction, the edges half a cell off, node rows, 0.01 m/s and
+    the load further on.
 Writes OUT/prandtl.csv and OUT/prandtl.png (q over Prandtl against h/B). B/40 takes minutes.
 
   python3 bench/prandtl_study.py [--out DIR] [--threads N] [--tool PATH]
@@ -26,7 +30,7 @@ from footing_common import gp_quoted, read_curve
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PRANDTL = (2 + math.pi) * 10.0  # kPa
 
-# name, cell size (m), interface, speed (m/s), particle update, XPIC every
+# name, cell size (m), interface, speed (m/s), particle update, XPIC every[, rows follow the footing]
 CASES = [
     ("rough_h010", 0.1, "rough", 0.02, "XPIC", 20),
     ("rough_h005", 0.05, "rough", 0.02, "XPIC", 20),
@@ -40,6 +44,12 @@ CASES = [
     ("xpic20_v001", 0.1, "rough", 0.01, "XPIC", 20),
     ("pic_v002", 0.1, "rough", 0.02, "PIC", 20),
     ("pic_v001", 0.1, "rough", 0.01, "PIC", 20),
+    ("follow_rough_h010", 0.1, "rough", 0.02, "XPIC", 20, True),
+    ("follow_rough_h005", 0.05, "rough", 0.02, "XPIC", 20, True),
+    ("follow_rough_h0025", 0.025, "rough", 0.02, "XPIC", 20, True),
+    ("follow_smooth_h010", 0.1, "smooth", 0.02, "XPIC", 20, True),
+    ("follow_smooth_h005", 0.05, "smooth", 0.02, "XPIC", 20, True),
+    ("follow_smooth_h0025", 0.025, "smooth", 0.02, "XPIC", 20, True),
 ]
 
 # At B/10, rough, 0.02 m/s, XPIC every 20: name, what differs (scene keys), averaging window, stop.
@@ -54,6 +64,15 @@ VARIANTS = [
     ("edge_half_off_h010", {"footing/centre_x": 2.05}, (0.02, 0.05), 0.05),
     ("node_rows_h010", {"footing/contact": "node_rows"}, (0.02, 0.05), 0.05),
     ("long_h010", {}, (0.05, 0.25), 0.25),
+    # with the rows following the footing: what is left of the error
+    ("follow_coulomb03_h010", {"grid/follow_footing": True, "footing/interface": "coulomb",
+                               "footing/friction_coefficient": 0.3}, (0.02, 0.05), 0.05),
+    ("follow_coulomb1_h010", {"grid/follow_footing": True, "footing/interface": "coulomb",
+                              "footing/friction_coefficient": 1.0}, (0.02, 0.05), 0.05),
+    ("follow_edge_half_off_h010", {"grid/follow_footing": True, "footing/centre_x": 2.05}, (0.02, 0.05), 0.05),
+    ("follow_node_rows_h010", {"grid/follow_footing": True, "footing/contact": "node_rows"}, (0.02, 0.05), 0.05),
+    ("follow_v001_h010", {"grid/follow_footing": True, "footing/speed": 0.01}, (0.02, 0.05), 0.05),
+    ("follow_long_h010", {"grid/follow_footing": True}, (0.05, 0.25), 0.25),
 ]
 
 
@@ -68,8 +87,8 @@ def with_changes(s, changes, stop):
     return s
 
 
-def scene(name, h, interface, speed, update, every):
-    return {"name": name, "grid": {"cell_size": h},
+def scene(name, h, interface, speed, update, every, follow=False):
+    return {"name": name, "grid": {"cell_size": h, "follow_footing": follow},
             "materials": {"clay": {"model": "von_mises",
                                    "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
             "bodies": [{"material": "clay", "x_range": [0, 4], "y_range": [0, 2], "density": 1000}],
@@ -113,34 +132,40 @@ def main():
         print(f"{name:22s} {row['variant'] or ''} h/B {row['h_over_B']:<6} {row['interface']:6s} "
               f"{row['speed_m_per_s']:5} m/s {row['particle_update']:4s}  q {qm:6.2f} kPa  q/(2+pi)s_u {qm / PRANDTL:.3f}")
 
-    for name, h, interface, speed, update, every in CASES:
-        run(name, scene(name, h, interface, speed, update, every),
+    for name, h, interface, speed, update, every, *follow in CASES:
+        follow = bool(follow and follow[0])
+        run(name, scene(name, h, interface, speed, update, every, follow),
             {"case": name, "variant": "", "h_over_B": h, "interface": interface, "speed_m_per_s": speed,
-             "particle_update": update, "xpic_every": every if update == "XPIC" else ""}, (0.02, 0.05))
+             "particle_update": update, "xpic_every": every if update == "XPIC" else "", "rows_follow": follow},
+            (0.02, 0.05))
     for name, changes, window, stop in VARIANTS:
         variant = "; ".join(f"{k} = {v}" for k, v in changes.items()) or "as rough_h010"
         run(name, with_changes(scene(name, 0.1, "rough", 0.02, "XPIC", 20), changes, stop),
             {"case": name, "variant": variant, "h_over_B": 0.1, "interface": "rough", "speed_m_per_s": 0.02,
-             "particle_update": "XPIC", "xpic_every": 20}, window)
+             "particle_update": "XPIC", "xpic_every": 20, "rows_follow": changes.get("grid/follow_footing", False)}, window)
     with open(os.path.join(a.out, "prandtl.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    ladder = {r["h_over_B"]: r["q_over_prandtl"] for r in rows if r["case"].startswith("rough_h")}
-    hs = sorted(ladder, reverse=True)
-    for h0, h1 in zip(hs, hs[1:]):
-        print(f"first-order extrapolation from B/{1 / h0:.0f} and B/{1 / h1:.0f}: {2 * ladder[h1] - ladder[h0]:.3f}")
-    data = os.path.join(a.out, "prandtl_ladder.dat")
-    with open(data, "w") as f:
-        for h in hs:
-            f.write(f"{h} {ladder[h]}\n")
+    plots = []
+    for prefix, title in (("rough_h", "fixed rows, rough"), ("follow_rough_h", "rows follow the footing, rough"),
+                          ("follow_smooth_h", "rows follow the footing, smooth")):
+        ladder = {r["h_over_B"]: r["q_over_prandtl"] for r in rows if r["case"].startswith(prefix)}
+        hs = sorted(ladder, reverse=True)
+        for h0, h1 in zip(hs, hs[1:]):
+            print(f"{title}: first-order extrapolation from B/{1 / h0:.0f} and B/{1 / h1:.0f}: "
+                  f"{2 * ladder[h1] - ladder[h0]:.3f}")
+        data = os.path.join(a.out, f"prandtl_{prefix}ladder.dat")
+        with open(data, "w") as f:
+            for h in hs:
+                f.write(f"{h} {ladder[h]}\n")
+        plots.append(f"{gp_quoted(data)} using 1:2 with linespoints pt 7 title {gp_quoted(title + ', 0.02 m/s')}")
     script = "\n".join([
         "set terminal pngcairo size 800,560",
         f"set output {gp_quoted(os.path.join(a.out, 'prandtl.png'))}",
         "set xlabel 'cell size h / B'", "set ylabel 'q / (2 + pi) s_u  (S/B 0.02-0.05)'",
         "set xrange [0:0.11]", "set yrange [0.9:1.25]", "set key top left", "set grid",
-        f"plot {gp_quoted(data)} using 1:2 with linespoints pt 7 title 'contact footing, rough, 0.02 m/s', "
-        "1 with lines dt 2 lc rgb 'black' title 'Prandtl (2 + pi) s_u'", ""])
+        "plot " + ", ".join(plots) + ", 1 with lines dt 2 lc rgb 'black' title 'Prandtl (2 + pi) s_u'", ""])
     subprocess.run(["gnuplot"], input=script, text=True, check=True)
     print(f"results: {a.out}/prandtl.csv, prandtl.png")
     return 0

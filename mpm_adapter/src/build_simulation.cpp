@@ -68,7 +68,7 @@ Simulation build_simulation(const Scene& scene) {
   const double x_min = extent.x_min, x_max = extent.x_max, y_min = extent.y_min;
   constexpr int margin = GridExtent::margin;
   Grid grid;
-  grid.h = h;
+  grid.h = grid.hy = h;
   grid.x0 = x_min - margin * h;
   grid.y0 = y_min - margin * h;
   grid.nx = static_cast<int>(extent.nodes_x);

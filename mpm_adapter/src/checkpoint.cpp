@@ -155,7 +155,7 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
   });
   if (P.tracked != sim.particles().tracked) r.refuse("follows other particles than the scene's particle_histories");
   const Grid& g = sim.grid();
-  const double x_max = g.x0 + (g.nx - 1) * g.h, y_max = g.y0 + (g.ny - 1) * g.h;
+  const double x_max = g.x0 + (g.nx - 1) * g.h, y_max = g.y0 + (g.ny - 1) * g.hy;
   for (std::size_t p = 0; p < P.n; ++p) {
     if (P.material[p] < 0 || static_cast<std::size_t>(P.material[p]) >= sim.materials().size())
       r.refuse("gives particle " + std::to_string(p) + " a material index out of range");

@@ -27,7 +27,7 @@ void Footing::constrain(const Grid& grid, NodeConstraints& c) const {
   const double h = grid.h, tol = 1e-9 * h;
   const double vfx = vx(), vfy = vy();
   const double centre = centre_x(), half = 0.5 * spec_.width;
-  const long long j_base = std::llround((base_y() - grid.y0) / h);
+  const long long j_base = std::llround((base_y() - grid.y0) / grid.hy);
   for (int j = static_cast<int>(std::max(0LL, j_base)); j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       const double x = grid.x0 + i * h;

@@ -75,6 +75,15 @@ Scene modelled_part(const Scene& scene) {
   return half;
 }
 
+double deepest_settlement(const Scene& s) {
+  if (!s.footing) return 0.0;
+  const FootingSpec& f = *s.footing;
+  if (f.unload_at_S_over_B > 0.0) return f.unload_at_S_over_B * f.width;
+  if (s.stop.S_over_B) return *s.stop.S_over_B * f.width;
+  if (s.stop.time) return *s.stop.time * f.speed;
+  return 0.0;
+}
+
 GridExtent grid_extent(const Scene& s) {
   GridExtent g;
   g.x_min = g.y_min = INFINITY;
@@ -85,7 +94,14 @@ GridExtent grid_extent(const Scene& s) {
   }
   const double h = s.cell_size;
   g.nodes_x = std::round((g.x_max - g.x_min) / h) + 2 * GridExtent::margin + 1;
-  g.nodes_y = std::round((g.y_max - g.y_min) / h) + GridExtent::margin + s.cells_above + 1;
+  const double cells_y = std::round((g.y_max - g.y_min) / h);
+  g.nodes_y = cells_y + GridExtent::margin + s.cells_above + 1;
+  // Rows that follow a footing get closer as it settles: rows are added above so that the
+  // grid's top stays where it was at the deepest settlement of the run.
+  if (s.follow_footing && s.footing) {
+    const double settled = deepest_settlement(s), hy = (cells_y * h - settled) / cells_y;
+    if (hy > 0.0) g.nodes_y += std::max(0.0, std::ceil((s.cells_above * h + settled) / hy - 1e-9) - s.cells_above);
+  }
   return g;
 }
 

@@ -44,7 +44,8 @@ Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
       settings_(settings),
       materials_(std::move(materials)),
       particles_(std::move(particles)),
-      particle_half_width_(particle_half_width) {
+      particle_half_width_(particle_half_width),
+      built_y0_(grid_.y0) {
   prepare();
 }
 
@@ -62,6 +63,18 @@ bool Simulation::is_xpic_step(long long step) const {
 }
 
 void Simulation::prepare() {
+  if (settings_.grid_follows_footing && boundaries_.footing.active()) {
+    // Rows from the grid as built (spacing h): the base wall's row stays put, the row of the
+    // footing's starting base follows it.
+    const Footing& f = boundaries_.footing;
+    rows_.on = true;
+    rows_.fixed_row = boundaries_.walls.base_fixed ? static_cast<int>(std::lround((boundaries_.walls.base - built_y0_) / grid_.h)) : 0;
+    rows_.fixed_y = built_y0_ + rows_.fixed_row * grid_.h;
+    rows_.base_row = static_cast<int>(std::lround((f.spec().base_y - built_y0_) / grid_.h));
+    if (rows_.base_row <= rows_.fixed_row)
+      throw SimulationError("the rows cannot follow a footing whose base lies on or below the grid's fixed row");
+    follow_footing();
+  }
   StepScratch& w = work_;
   const std::size_t N = grid_.nodes(), n = particles_.n;
   for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
@@ -133,7 +146,7 @@ double Simulation::stable_time_step() const {
   const double omega = std::sqrt(omega2);
   if (!(fastest > 0.0) || !std::isfinite(fastest))
     throw SimulationError("step " + std::to_string(clock_.step) + ": no finite wave speed for the time step");
-  double dt = settings_.cfl * grid_.h / fastest;
+  double dt = settings_.cfl * std::min(grid_.h, grid_.hy) / fastest;
   // The stiffest contact spring (a whole particle width pressed) on its particle: dt <= 2 cfl /
   // omega keeps it stable with the CFL bound's margin (no restriction at one particle per cell
   // and factor <= 4).
@@ -158,10 +171,10 @@ void Simulation::fail(std::size_t p, const std::string& what, const std::string&
 void Simulation::compute_shape_functions() {
   StepScratch& w = work_;
   Particles& P = particles_;
-  const double h = grid_.h, l = particle_half_width_;
+  const double h = grid_.h, hy = grid_.hy, l = particle_half_width_;
   std::vector<long long> off_grid(w.scatter.threads(), -1);
   parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    const AxisWeights ax = axis_weights((P.x[p] - grid_.x0) / h, l), ay = axis_weights((P.y[p] - grid_.y0) / h, l);
+    const AxisWeights ax = axis_weights((P.x[p] - grid_.x0) / h, l), ay = axis_weights((P.y[p] - grid_.y0) / hy, l);
     if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid_.nx ||
         ay.first + 3 >= grid_.ny) {
       if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
@@ -173,7 +186,7 @@ void Simulation::compute_shape_functions() {
       w.wx[4 * p + k] = ax.w[k];
       w.dwx[4 * p + k] = ax.dw[k] / h;
       w.wy[4 * p + k] = ay.w[k];
-      w.dwy[4 * p + k] = ay.dw[k] / h;
+      w.dwy[4 * p + k] = ay.dw[k] / hy;
     }
   });
   for (long long p : off_grid)
@@ -288,6 +301,7 @@ void Simulation::xpic_velocity(int order) {
 // halves (update-stress-average), or once before the internal force or after the re-map.
 void Simulation::step() {
   boundaries_.footing.at_time(clock_.time);
+  follow_footing();
   refresh_time_step();
   compute_shape_functions();
   map_mass_and_momentum();
@@ -303,6 +317,18 @@ void Simulation::step() {
     update_stress(work_.ux.data(), work_.uy.data(), part);  // with the re-mapped v
   }
   advance_boundaries();
+}
+
+// The rows between the base wall (or the grid's first row) and the footing's base keep their
+// count and share the height between them: the base stays on its node row at every settlement
+// (docs/mpm.md, "The grid follows the footing").
+void Simulation::follow_footing() {
+  if (!rows_.on) return;
+  const double height = boundaries_.footing.base_y() - rows_.fixed_y;
+  if (!(height > 0.0))
+    throw SimulationError("step " + std::to_string(clock_.step) + ": the footing's base reached the grid's fixed row");
+  grid_.hy = height / (rows_.base_row - rows_.fixed_row);
+  grid_.y0 = rows_.fixed_y - rows_.fixed_row * grid_.hy;
 }
 
 void Simulation::refresh_time_step() {
@@ -388,7 +414,7 @@ void Simulation::spread_contact_forces() {
   for (std::size_t p = 0; p < particles_.n; ++p) {
     const ContactForce& t = w.contact[p];
     if (!t.touching) continue;
-    const double u = (t.at_x - grid_.x0) / h, v = (t.at_y - grid_.y0) / h;
+    const double u = (t.at_x - grid_.x0) / h, v = (t.at_y - grid_.y0) / grid_.hy;
     const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
     const double a = u - i, b = v - j;
     const std::size_t k0 = static_cast<std::size_t>(j) * grid_.nx + i;

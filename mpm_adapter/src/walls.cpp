@@ -36,13 +36,13 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
   }
   if (base_fixed) {
     const double s = c == FieldKind::scalar ? 1.0 : -1.0;  // no slip: both components odd
-    const int jb = wall_node(base, grid.y0, grid.h);
+    const int jb = wall_node(base, grid.y0, grid.hy);
     for (int i = 0; i < nx; ++i) fold_line(s, std::min(jb, ny - 1 - jb), [&](int k) -> double& { return at(i, jb + k); });
   }
 }
 
 Walls::Lines Walls::lines(const Grid& grid) const {
-  return {wall_node(left, grid.x0, grid.h), wall_node(right, grid.x0, grid.h), wall_node(base, grid.y0, grid.h)};
+  return {wall_node(left, grid.x0, grid.h), wall_node(right, grid.x0, grid.h), wall_node(base, grid.y0, grid.hy)};
 }
 
 int Walls::wall_of(int i, int j, const Lines& at) const {

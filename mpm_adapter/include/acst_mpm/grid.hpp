@@ -4,9 +4,11 @@
 
 namespace acst::mpm {
 
-// The regular background grid: nodes (i, j) at (x0 + i h, y0 + j h), node index j * nx + i.
+// The regular background grid: nodes (i, j) at (x0 + i h, y0 + j hy), node index j * nx + i.
+// The row spacing hy is h unless the rows follow a footing's base (docs/mpm.md, "The grid
+// follows the footing"), where it changes every step.
 struct Grid {
-  double x0 = 0.0, y0 = 0.0, h = 1.0;
+  double x0 = 0.0, y0 = 0.0, h = 1.0, hy = 1.0;
   int nx = 0, ny = 0;
   std::size_t nodes() const { return static_cast<std::size_t>(nx) * ny; }
 };

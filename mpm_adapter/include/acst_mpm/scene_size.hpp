@@ -19,6 +19,9 @@ struct GridExtent {
   static constexpr int margin = 3;  // cells beyond the walls: the stencil reaches two
 };
 GridExtent grid_extent(const Scene& part);
+// The footing's settlement at the end of the run (m): its unloading point, or its stop by S/B or
+// by time; 0 without a footing or for a run that stops by steps.
+double deepest_settlement(const Scene& scene);
 
 struct SceneSize {
   double nodes_x = 0, nodes_y = 0, nodes = 0, particles = 0;

@@ -1,0 +1,187 @@
+// The grid that follows the footing (docs/mpm.md, "The grid follows the footing"): the footing's
+// base and the base wall stay on their node rows at every settlement and the grid's top does not
+// sink; the rigid plate on a confined elastic layer still gives the closed form; Prandtl's load on
+// weightless Tresca soil at h = B/10 comes within the tolerances below (with fixed rows: +14.7 %
+// rough, +12.6 % smooth); the node-row footing no longer jumps where its base would have crossed
+// a row; a run resumed from a checkpoint continues bit for bit; and the reader's checks of the key.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "acst_mpm/checkpoint.hpp"
+#include "mpm_scenes.hpp"
+#include "scratch.hpp"
+
+using namespace acst::mpm;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// B = 1 m on weightless Tresca soil 4 B x 2 B (s_u = 10 kPa, E = 1000 s_u), the scene of
+// mpm_footing_test's Prandtl test with the rows following the footing.
+std::string tresca(double h, const std::string& interface, double speed, const std::string& contact = "penalty") {
+  return R"({"name": "prandtl", "grid": {"cell_size": )" + std::to_string(h) + R"(, "follow_footing": true},
+    "materials": {"clay": {"model": "von_mises", "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
+    "bodies": [{"material": "clay", "x_range": [0, 4], "y_range": [0, 2], "density": 1000}],
+    "footing": {"width": 1.0, "centre_x": 2.0, "speed": )" + std::to_string(speed) + R"(, "interface": ")" + interface +
+         R"(", "contact": ")" + contact + R"("},
+    "solver": {"grid_damping": 2, "particle_update": "XPIC", "xpic_order": 4, "xpic_every": 20},
+    "stop": {"S_over_B": 0.1}})";
+}
+
+struct Sample {
+  double S, q;
+};
+
+// q = V/B (kPa, B = 1 m) averaged over every `every` steps until the settlement reaches S_end.
+std::vector<Sample> load_curve(Simulation& s, double S_end, int every = 20) {
+  std::vector<Sample> out;
+  double sum = 0;
+  int n = 0;
+  while (s.footing().settlement() < S_end) {
+    s.step();
+    sum += -s.reaction(reaction_footing).fy / 1000.0;
+    if (++n == every) {
+      out.push_back({s.footing().settlement(), sum / n});
+      sum = 0, n = 0;
+    }
+  }
+  return out;
+}
+
+double mean_q(const std::vector<Sample>& c, double from, double to) {
+  double sum = 0;
+  int n = 0;
+  for (const Sample& r : c)
+    if (r.S >= from && r.S <= to) sum += r.q, ++n;
+  return n > 0 ? sum / n : NAN;
+}
+
+}  // namespace
+
+TEST(GridFollowsFooting, BaseAndBaseWallStayOnTheirRows) {
+  Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1));
+  const Grid built = s.grid();
+  // Built with spacing h: the base wall (y = 0) three rows up, the footing's base (y = 2) on row 23.
+  ASSERT_NEAR((0.0 - built.y0) / built.hy, 3.0, 1e-9);
+  ASSERT_NEAR((2.0 - built.y0) / built.hy, 23.0, 1e-9);
+  // Rows are added above so that the top never sinks below that of fixed rows: the soil's top
+  // plus cells_above (6) cells.
+  const double top = 2.0 + 6 * 0.1;
+  EXPECT_GT(built.y0 + (built.ny - 1) * built.hy, top + 0.1) << "rows were added";
+  double deepest = 0;
+  while (s.footing().settlement() < 0.1) {
+    const double base = s.footing().base_y();  // the grid of a step is laid out at its start
+    s.step();
+    const Grid& g = s.grid();
+    ASSERT_NEAR((base - g.y0) / g.hy, 23.0, 1e-9) << "at S " << s.footing().settlement();
+    ASSERT_NEAR((0.0 - g.y0) / g.hy, 3.0, 1e-9) << "at S " << s.footing().settlement();
+    ASSERT_GE(g.y0 + (g.ny - 1) * g.hy, top - 1e-9) << "the grid's top sank at S " << s.footing().settlement();
+    EXPECT_EQ(g.h, built.h) << "the columns do not move";
+    EXPECT_EQ(g.x0, built.x0);
+    deepest = 2.0 - base;
+  }
+  // 20 rows share the 2 m between the wall and the base: hy = (2 - S) / 20.
+  EXPECT_NEAR(s.grid().hy, (2.0 - deepest) / 20.0, 1e-12);
+  EXPECT_GT(deepest, 0.09);
+}
+
+TEST(GridFollowsFooting, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffness) {
+  // The plate spans the layer from wall to wall, the same test as with fixed rows
+  // (mpm_footing_test): V = W M S / H with S the plate's travel less the contact's penetration.
+  const double W = 1.0, H = 2.0, E = 1e4, nu = 0.3;
+  std::string scene = mpm_test::elastic_block(
+      W, H, 0.1, E, nu, 1000.0, R"("footing": {"width": 1.0, "centre_x": 0.5, "speed": 0.002}, "stop": {"time": 2.5})",
+      R"({"grid_damping": 10, "particle_update": "FLIP"})");
+  scene.replace(scene.find(R"("cell_size": )"), 0, R"("follow_footing": true, )");
+  Simulation s = mpm_test::build(scene);
+  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));  // kPa
+  while (s.time() < 2.0) s.step();
+  double V = 0, S = 0, penetration = 0;
+  int n = 0;
+  for (; n < 20; ++n) {
+    s.step();
+    V += -s.reaction(reaction_footing).fy / 1000.0;
+    penetration = std::max(penetration, s.contact().max_penetration);
+  }
+  V /= n;
+  S = s.footing().settlement() - penetration;
+  const double expected = W * M * S / H;  // kN/m
+  EXPECT_NEAR(V, expected, 0.015 * expected) << "V " << V << " kN/m at S " << s.footing().settlement() << " m";
+  EXPECT_LT(s.grid().hy, s.grid().h) << "the rows followed the plate";
+}
+
+// q = V/B over S/B 0.02-0.05 at h = B/10, 0.02 m/s, as the fixed-row test takes it. Measured
+// (docs/mpm.md, "The grid follows the footing"): rough +7.8 %, smooth +4.0 % (fixed rows: +14.7 %,
+// +12.6 %). Stated tolerances: never below Prandtl, at most +10 % rough and +6 % smooth.
+TEST(GridFollowsFooting, PrandtlBearingCapacityAtATenthOfTheWidth) {
+  const double prandtl = (2 + pi) * 10.0;  // kPa
+  for (const std::string interface : {"rough", "smooth"}) {
+    Simulation s = mpm_test::build(tresca(0.1, interface, 0.02));
+    const double q = mean_q(load_curve(s, 0.05), 0.02, 0.05);
+    EXPECT_GT(q, prandtl) << interface << ": q " << q << " kPa";
+    EXPECT_LT(q, (interface == "rough" ? 1.10 : 1.06) * prandtl)
+        << interface << ": q " << q << " kPa at h = B/10, (2 + pi) s_u = " << prandtl;
+  }
+}
+
+// The measure of mpm_footing_test's NodeRowsJumpAtARowCrossingWhereContactDoesNot: the largest
+// change between the mean q of adjacent windows of 0.005 B ending between S/B 0.03 and 0.07,
+// where with fixed rows a new node row joins the footing (6.5 % there). Stated tolerance: 3 %.
+TEST(GridFollowsFooting, NodeRowFootingNoLongerJumps) {
+  Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1, "node_rows"));
+  const std::vector<Sample> c = load_curve(s, 0.075);
+  double worst = 0;
+  for (double S = 0.03; S <= 0.07 + 1e-9; S += 0.001) {
+    const double before = mean_q(c, S - 0.005, S), after = mean_q(c, S, S + 0.005);
+    worst = std::max(worst, std::fabs(after - before) / before);
+  }
+  EXPECT_LT(worst, 0.03) << "largest change " << 100 * worst << " %";
+}
+
+// The rows are laid out again from the footing's motion when a checkpoint comes back: the resumed
+// run is the straight run bit for bit (ACST sand, inclined footing, XPIC steps).
+TEST(GridFollowsFooting, ResumedRunContinuesBitForBit) {
+  const Scene scene = parse_scene(R"({"name": "small", "grid": {"cell_size": 0.15, "follow_footing": true},
+    "materials": {"sand": ")" + std::string(ACST_SOURCE_DIR) + R"(/data/parameters/toyoura_acst_calibrated.json"},
+    "bodies": [{"material": "sand", "x_range": [0, 2.4], "y_range": [0, 1.2], "density": 1600,
+                "relative_density_pct": 85.6, "bedding_angle_deg": 30}],
+    "gravity": 9.8, "initial_stress": {"type": "geostatic", "K0": 0.4}, "surcharge_kPa": 1,
+    "footing": {"width": 0.3, "centre_x": 1.2, "speed": 0.5, "inclination_deg": 10},
+    "solver": {"xpic_every": 7, "threads": 2}, "stop": {"time": 0.5}})");
+  // The checkpoint is taken past two thirds of a cell of settlement: rows laid out again from the
+  // settled base instead of the starting one would be a row off.
+  Simulation first = build_simulation(scene);
+  while (first.footing().settlement() < 0.1) first.step();
+  Simulation straight = build_simulation(scene);
+  while (straight.step_count() < first.step_count() + 35) straight.step();
+  const std::string file = (acst::test::scratch_folder("follow_checkpoint") / "checkpoint.bin").string();
+  write_checkpoint(file, scene, first, RunState{});
+  Simulation resumed = build_simulation(scene);
+  RunState loaded;
+  read_checkpoint(file, scene, resumed, loaded);
+  for (int k = 0; k < 35; ++k) resumed.step();
+  EXPECT_LT(straight.grid().hy, straight.grid().h) << "the rows followed the footing down";
+  EXPECT_EQ(straight.grid().hy, resumed.grid().hy);
+  EXPECT_EQ(straight.grid().y0, resumed.grid().y0);
+  EXPECT_EQ(straight.particles().x, resumed.particles().x);
+  EXPECT_EQ(straight.particles().vy, resumed.particles().vy);
+  EXPECT_EQ(straight.particles().stress, resumed.particles().stress);
+  EXPECT_EQ(straight.particles().statev, resumed.particles().statev);
+  EXPECT_EQ(straight.reaction(reaction_footing).fy, resumed.reaction(reaction_footing).fy);
+}
+
+TEST(GridFollowsFooting, ReaderChecksTheKey) {
+  const std::string no_footing = mpm_test::elastic_block(1.0, 1.0, 0.1, 1e4, 0.3, 1000.0, R"("stop": {"steps": 1})");
+  std::string scene = no_footing;
+  scene.replace(scene.find(R"("cell_size": )"), 0, R"("follow_footing": true, )");
+  EXPECT_NE(mpm_test::parse_error(scene).find("/grid/follow_footing: needs a /footing"), std::string::npos)
+      << mpm_test::parse_error(scene);
+  scene = no_footing;
+  scene.replace(scene.find(R"("cell_size": )"), 0, R"("follow_footing": 1, )");
+  EXPECT_NE(mpm_test::parse_error(scene).find("/grid/follow_footing"), std::string::npos) << mpm_test::parse_error(scene);
+}
