@@ -1,6 +1,7 @@
 """Helpers shared by the footing studies in bench/ (command line, load curves, gnuplot quoting)."""
 import argparse
 import csv
+import json
 import math
 import os
 import subprocess
@@ -19,6 +20,19 @@ def study_arguments(doc, out_name, only_help, switches=()):
     for flag, text in switches:
         ap.add_argument(flag, action="store_true", help=text)
     return ap.parse_args()
+
+
+def scene_with_absolute_paths(path):
+    """A scene file as a dict, its parameter files and lab curve made absolute (they are relative
+    to the scene's folder), so that a changed copy can be written anywhere."""
+    with open(path) as f:
+        s = json.load(f)
+    here = os.path.dirname(os.path.abspath(path))
+    s["materials"] = {k: v if isinstance(v, dict) else os.path.normpath(os.path.join(here, v))
+                      for k, v in s["materials"].items()}
+    if "lab_curve" in s.get("output", {}):
+        s["output"]["lab_curve"] = os.path.normpath(os.path.join(here, s["output"]["lab_curve"]))
+    return s
 
 
 def read_curve(path):

@@ -18,7 +18,7 @@ import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, read_curve, study_arguments, value_at
+from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_paths, study_arguments, value_at
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 # (test, cell size label, scene file), coarse to fine. The scenes differ in the cell size (and
@@ -47,14 +47,8 @@ def highest_window_mean(S, q, half_width=0.005):
 def with_rows_following(scene, out):
     """A copy of the scene in OUT/scenes/ with grid/follow_footing true and its files' paths
     made absolute (they are relative to the scene's folder)."""
-    here = os.path.dirname(scene)
-    with open(scene) as f:
-        s = json.load(f)
+    s = scene_with_absolute_paths(scene)
     s["grid"]["follow_footing"] = True
-    s["materials"] = {k: v if isinstance(v, dict) else os.path.normpath(os.path.join(here, v))
-                      for k, v in s["materials"].items()}
-    if "lab_curve" in s.get("output", {}):
-        s["output"]["lab_curve"] = os.path.normpath(os.path.join(here, s["output"]["lab_curve"]))
     os.makedirs(os.path.join(out, "scenes"), exist_ok=True)
     copy = os.path.join(out, "scenes", os.path.basename(scene))
     with open(copy, "w") as f:

@@ -21,7 +21,8 @@ import os
 import subprocess
 import sys
 
-from footing_common import ROOT, max_kinetic_ratio, plot_beside_kimura, read_curve, rms_difference_pct, study_arguments, value_at, write_table
+from footing_common import (ROOT, max_kinetic_ratio, plot_beside_kimura, read_curve, rms_difference_pct,
+                            scene_with_absolute_paths, study_arguments, value_at, write_table)
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 TESTS = {"V85.6": "kimura_V85.6_alpha0_half.json", "H86.7": "kimura_H86.7_alpha90.json"}
@@ -50,13 +51,10 @@ def case_name(test, num, den, cfl):
 
 def scene_for(test, num, den, cfl):
     """The bundled scene on the half domain, one stress update per step, speed x num / den."""
-    base = os.path.join(SCENES, TESTS[test])
-    with open(base) as f:
-        s = json.load(f)
+    s = scene_with_absolute_paths(os.path.join(SCENES, TESTS[test]))
     s["name"] = case_name(test, num, den, cfl)
-    s["materials"] = {k: os.path.normpath(os.path.join(SCENES, v)) for k, v in s["materials"].items()}
-    s["output"] = {"lab_curve": os.path.normpath(os.path.join(SCENES, s["output"]["lab_curve"])),
-                   "lab_label": s["output"]["lab_label"], "vtk_every_S_over_B": 1.0, "checkpoint_every_s": 0}
+    s["output"] = {"lab_curve": s["output"]["lab_curve"], "lab_label": s["output"]["lab_label"],
+                   "vtk_every_S_over_B": 1.0, "checkpoint_every_s": 0}
     s["footing"]["symmetric_half"] = True
     s["footing"]["speed"] *= num / den
     s["solver"]["cfl"] = cfl

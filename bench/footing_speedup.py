@@ -22,7 +22,7 @@ import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, max_kinetic_ratio, read_curve, study_arguments, value_at
+from footing_common import ROOT, gp_quoted, max_kinetic_ratio, read_curve, scene_with_absolute_paths, study_arguments, value_at
 
 BASE = os.path.join(ROOT, "data", "scenes", "mpm", "kimura_V85.6_alpha0.json")
 FACTORS = (2, 4, 8, 16, 32)
@@ -45,12 +45,8 @@ def cases():
 
 
 def scene_for(name, half, speed, mass, ramp, stress_update):
-    with open(BASE) as f:
-        s = json.load(f)
-    here = os.path.dirname(BASE)
+    s = scene_with_absolute_paths(BASE)
     s["name"] = name
-    s["materials"] = {k: os.path.normpath(os.path.join(here, v)) for k, v in s["materials"].items()}
-    s["output"]["lab_curve"] = os.path.normpath(os.path.join(here, s["output"]["lab_curve"]))
     s["output"]["checkpoint_every_s"] = 0
     s["output"]["contours_at_S_over_B"] = []
     s["output"]["contours_at_peak"] = False

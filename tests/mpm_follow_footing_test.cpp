@@ -12,59 +12,19 @@
 #include <vector>
 
 #include "acst_mpm/checkpoint.hpp"
+#include "footing_runs.hpp"
 #include "mpm_scenes.hpp"
 #include "scratch.hpp"
 
 using namespace acst::mpm;
-
-namespace {
+using mpm_test::Period;
+using mpm_test::run;
+using mpm_test::tresca;
 
 constexpr double pi = 3.14159265358979323846;
 
-// B = 1 m on weightless Tresca soil 4 B x 2 B (s_u = 10 kPa, E = 1000 s_u), the scene of
-// mpm_footing_test's Prandtl test with the rows following the footing.
-std::string tresca(double h, const std::string& interface, double speed, const std::string& contact = "penalty") {
-  return R"({"name": "prandtl", "grid": {"cell_size": )" + std::to_string(h) + R"(, "follow_footing": true},
-    "materials": {"clay": {"model": "von_mises", "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
-    "bodies": [{"material": "clay", "x_range": [0, 4], "y_range": [0, 2], "density": 1000}],
-    "footing": {"width": 1.0, "centre_x": 2.0, "speed": )" + std::to_string(speed) + R"(, "interface": ")" + interface +
-         R"(", "contact": ")" + contact + R"("},
-    "solver": {"grid_damping": 2, "particle_update": "XPIC", "xpic_order": 4, "xpic_every": 20},
-    "stop": {"S_over_B": 0.1}})";
-}
-
-struct Sample {
-  double S, q;
-};
-
-// q = V/B (kPa, B = 1 m) averaged over every `every` steps until the settlement reaches S_end.
-std::vector<Sample> load_curve(Simulation& s, double S_end, int every = 20) {
-  std::vector<Sample> out;
-  double sum = 0;
-  int n = 0;
-  while (s.footing().settlement() < S_end) {
-    s.step();
-    sum += -s.reaction(reaction_footing).fy / 1000.0;
-    if (++n == every) {
-      out.push_back({s.footing().settlement(), sum / n});
-      sum = 0, n = 0;
-    }
-  }
-  return out;
-}
-
-double mean_q(const std::vector<Sample>& c, double from, double to) {
-  double sum = 0;
-  int n = 0;
-  for (const Sample& r : c)
-    if (r.S >= from && r.S <= to) sum += r.q, ++n;
-  return n > 0 ? sum / n : NAN;
-}
-
-}  // namespace
-
 TEST(GridFollowsFooting, BaseAndBaseWallStayOnTheirRows) {
-  Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1));
+  Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1, "penalty", true));
   const Grid built = s.grid();
   // Built with spacing h: the base wall (y = 0) three rows up, the footing's base (y = 2) on row 23.
   ASSERT_NEAR((0.0 - built.y0) / built.hy, 3.0, 1e-9);
@@ -100,18 +60,10 @@ TEST(GridFollowsFooting, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffne
   scene.replace(scene.find(R"("cell_size": )"), 0, R"("follow_footing": true, )");
   Simulation s = mpm_test::build(scene);
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));  // kPa
-  while (s.time() < 2.0) s.step();
-  double V = 0, S = 0, penetration = 0;
-  int n = 0;
-  for (; n < 20; ++n) {
-    s.step();
-    V += -s.reaction(reaction_footing).fy / 1000.0;
-    penetration = std::max(penetration, s.contact().max_penetration);
-  }
-  V /= n;
-  S = s.footing().settlement() - penetration;
-  const double expected = W * M * S / H;  // kN/m
-  EXPECT_NEAR(V, expected, 0.015 * expected) << "V " << V << " kN/m at S " << s.footing().settlement() << " m";
+  run(s, 20, [](const Simulation& x) { return x.time() >= 2.0; });
+  const Period last = run(s, 20, [](const Simulation& x) { return x.time() >= 2.5; }).back();
+  const double S = last.S - last.penetration, expected = W * M * S / H;  // kN/m
+  EXPECT_NEAR(last.V, expected, 0.015 * expected) << "V " << last.V << " kN/m at S " << last.S << " m";
   EXPECT_LT(s.grid().hy, s.grid().h) << "the rows followed the plate";
 }
 
@@ -121,25 +73,19 @@ TEST(GridFollowsFooting, RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffne
 TEST(GridFollowsFooting, PrandtlBearingCapacityAtATenthOfTheWidth) {
   const double prandtl = (2 + pi) * 10.0;  // kPa
   for (const std::string interface : {"rough", "smooth"}) {
-    Simulation s = mpm_test::build(tresca(0.1, interface, 0.02));
-    const double q = mean_q(load_curve(s, 0.05), 0.02, 0.05);
+    const double q = mpm_test::prandtl_q(0.1, interface, true);
     EXPECT_GT(q, prandtl) << interface << ": q " << q << " kPa";
     EXPECT_LT(q, (interface == "rough" ? 1.10 : 1.06) * prandtl)
         << interface << ": q " << q << " kPa at h = B/10, (2 + pi) s_u = " << prandtl;
   }
 }
 
-// The measure of mpm_footing_test's NodeRowsJumpAtARowCrossingWhereContactDoesNot: the largest
-// change between the mean q of adjacent windows of 0.005 B ending between S/B 0.03 and 0.07,
-// where with fixed rows a new node row joins the footing (6.5 % there). Stated tolerance: 3 %.
+// The measure of mpm_footing_test's NodeRowsJumpAtARowCrossingWhereContactDoesNot
+// (mpm_test::largest_window_change; fixed rows: 6.5 %). Stated tolerance: 3 %.
 TEST(GridFollowsFooting, NodeRowFootingNoLongerJumps) {
-  Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1, "node_rows"));
-  const std::vector<Sample> c = load_curve(s, 0.075);
-  double worst = 0;
-  for (double S = 0.03; S <= 0.07 + 1e-9; S += 0.001) {
-    const double before = mean_q(c, S - 0.005, S), after = mean_q(c, S, S + 0.005);
-    worst = std::max(worst, std::fabs(after - before) / before);
-  }
+  Simulation s = mpm_test::build(tresca(0.1, "rough", 0.1, "node_rows", true));
+  const double worst = mpm_test::largest_window_change(
+      run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.075; }));
   EXPECT_LT(worst, 0.03) << "largest change " << 100 * worst << " %";
 }
 

@@ -269,7 +269,8 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   s.cell_size = f::number(j["grid"]["cell_size"], "/grid/cell_size", f::positive(), "m");
   if (j["grid"].contains("cells_above"))
     s.cells_above = static_cast<int>(f::integer(j["grid"]["cells_above"], "/grid/cells_above", 2, 1000));
-  if (j["grid"].contains("follow_footing")) s.follow_footing = f::boolean(j["grid"]["follow_footing"], "/grid/follow_footing");
+  const bool follow_footing =
+      j["grid"].contains("follow_footing") && f::boolean(j["grid"]["follow_footing"], "/grid/follow_footing");
 
   read_materials(j["materials"], "/materials", dir, s);
   if (!j["bodies"].is_array() || j["bodies"].empty()) f::fail("/bodies", "expected a non-empty array of bodies");
@@ -305,8 +306,8 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   }
   if (j.contains("solver")) s.solver = read_solver(j["solver"], "/solver");
   s.solver.gravity = s.gravity;
-  if (s.follow_footing && !s.footing) f::fail("/grid/follow_footing", "needs a /footing (the rows follow its base)");
-  s.solver.grid_follows_footing = s.follow_footing;
+  if (follow_footing && !s.footing) f::fail("/grid/follow_footing", "needs a /footing (the rows follow its base)");
+  s.solver.grid_follows_footing = follow_footing;
 
   f::allow_keys(j["stop"], {"S_over_B", "time", "steps"}, "/stop");
   const std::string stop = f::one_of(j["stop"], {"S_over_B", "time", "steps"}, "/stop");

@@ -98,7 +98,7 @@ GridExtent grid_extent(const Scene& s) {
   g.nodes_y = cells_y + GridExtent::margin + s.cells_above + 1;
   // Rows that follow a footing get closer as it settles: rows are added above so that the
   // grid's top stays where it was at the deepest settlement of the run.
-  if (s.follow_footing && s.footing) {
+  if (s.solver.grid_follows_footing && s.footing) {
     const double settled = deepest_settlement(s), hy = (cells_y * h - settled) / cells_y;
     if (hy > 0.0) g.nodes_y += std::max(0.0, std::ceil((s.cells_above * h + settled) / hy - 1e-9) - s.cells_above);
   }

@@ -44,8 +44,17 @@ Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
       settings_(settings),
       materials_(std::move(materials)),
       particles_(std::move(particles)),
-      particle_half_width_(particle_half_width),
-      built_y0_(grid_.y0) {
+      particle_half_width_(particle_half_width) {
+  if (settings_.grid_follows_footing && boundaries_.footing.active()) {
+    // From the grid as built (spacing h): the base wall's row stays put, the row of the footing's
+    // starting base follows it.
+    rows_.on = true;
+    rows_.fixed_row = boundaries_.walls.base_fixed ? static_cast<int>(std::lround((boundaries_.walls.base - grid_.y0) / grid_.h)) : 0;
+    rows_.fixed_y = grid_.y0 + rows_.fixed_row * grid_.h;
+    rows_.base_row = static_cast<int>(std::lround((boundaries_.footing.spec().base_y - grid_.y0) / grid_.h));
+    if (rows_.base_row <= rows_.fixed_row)
+      throw SimulationError("the rows cannot follow a footing whose base lies on or below the grid's fixed row");
+  }
   prepare();
 }
 
@@ -63,18 +72,7 @@ bool Simulation::is_xpic_step(long long step) const {
 }
 
 void Simulation::prepare() {
-  if (settings_.grid_follows_footing && boundaries_.footing.active()) {
-    // Rows from the grid as built (spacing h): the base wall's row stays put, the row of the
-    // footing's starting base follows it.
-    const Footing& f = boundaries_.footing;
-    rows_.on = true;
-    rows_.fixed_row = boundaries_.walls.base_fixed ? static_cast<int>(std::lround((boundaries_.walls.base - built_y0_) / grid_.h)) : 0;
-    rows_.fixed_y = built_y0_ + rows_.fixed_row * grid_.h;
-    rows_.base_row = static_cast<int>(std::lround((f.spec().base_y - built_y0_) / grid_.h));
-    if (rows_.base_row <= rows_.fixed_row)
-      throw SimulationError("the rows cannot follow a footing whose base lies on or below the grid's fixed row");
-    follow_footing();
-  }
+  follow_footing();  // the rows for the footing's motion (a checkpoint's, on restore)
   StepScratch& w = work_;
   const std::size_t N = grid_.nodes(), n = particles_.n;
   for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);

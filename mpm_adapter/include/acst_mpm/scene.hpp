@@ -78,7 +78,6 @@ struct Scene {
   std::string name, file, text;  // text: the canonical JSON, stored in checkpoints
   double cell_size = 0;
   int cells_above = 6;           // empty cells kept above the highest body (heave room)
-  bool follow_footing = false;   // grid/follow_footing: a node row stays on the footing's base
   std::vector<MaterialSpec> materials;
   std::vector<BodySpec> bodies;
   double gravity = 0, K0 = 0.5;

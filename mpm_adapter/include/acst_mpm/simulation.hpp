@@ -44,7 +44,7 @@ struct Settings {
   double grid_damping = 0.5;      // alpha_g, 1/s
   double particle_damping = 0.0;  // alpha_p, 1/s
   int wave_speed_every = 100;     // steps between refreshes of the particles' wave speeds
-  bool grid_follows_footing = false;  // the row spacing keeps a node row on the footing's base
+  bool grid_follows_footing = false;  // grid/follow_footing: a node row stays on the footing's base
   double mass_scaling = 1.0;      // inertial mass x this factor (weight unchanged)
   double gravity = 0.0;           // m/s^2, acting in -y
   int threads = 0;                // 0: OpenMP default
@@ -138,8 +138,7 @@ class Simulation {
   std::vector<std::shared_ptr<const Material>> materials_;
   Particles particles_;
   double particle_half_width_ = 0.5;
-  double built_y0_ = 0.0;  // the grid's first row as built (row spacing h)
-  struct FollowingRows {
+  struct FollowingRows {  // laid out once from the grid as built (docs/mpm.md)
     bool on = false;
     int fixed_row = 0, base_row = 0;
     double fixed_y = 0.0;
