@@ -25,7 +25,7 @@ SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
 # the particles per cell) only: half domain, one stress update per step, the delivered set.
 CASES = []
 for test, base in (("V85.6", "kimura_V85.6_alpha0"), ("H86.7", "kimura_H86.7_alpha90")):
-    for label, tag in (("0.18", "h018"), ("0.09", "h009"), ("0.09 (2x2 ppc)", "h009ppc2"), ("0.06", "h006"), ("0.045", "h0045")):
+    for label, tag in (("0.18", "h018"), ("0.09", "h009"), ("0.09 (2x2 ppc, averaged)", "h009ppc2"), ("0.06", "h006"), ("0.045", "h0045")):
         CASES.append((test, label, os.path.join(SCENES, "convergence", f"{base}_{tag}.json")))
 
 

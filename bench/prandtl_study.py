@@ -8,7 +8,8 @@ scene of tests/mpm_footing_test.cpp). q = V/B averaged over S/B 0.02-0.05 agains
     (grid/follow_footing; docs/mpm.md, "The grid follows the footing");
   - at B/10, the particle update (FLIP, XPIC every 100/20/5 steps, PIC) at 0.1 m/s and the
     loading speed (0.1, 0.02, 0.01 m/s) for the default XPIC and for PIC.
-  - at B/10 and 0.02 m/s, what sets the error: particles per cell, Poisson's ratio, stiffness
+  - at B/10 and 0.02 m/s, what sets the error: particles per cell (with and without the
+    cell-averaged dilation rate, solver/volumetric_averaging; also at B/20), Poisson's ratio, stiffness
     (E = 300 s_u, over S/B 0.10-0.15, past its later failure), the footing's edges a quarter and
     half a cell off the nodes, the node-row footing, and the load further on (S/B 0.05-0.25);
     with the rows following: Coulomb friction, the edges half a cell off, node rows, 0.01 m/s and
@@ -73,6 +74,28 @@ VARIANTS = [
     ("follow_node_rows_h010", {"grid/follow_footing": True, "footing/contact": "node_rows"}, (0.02, 0.05), 0.05),
     ("follow_v001_h010", {"grid/follow_footing": True, "footing/speed": 0.01}, (0.02, 0.05), 0.05),
     ("follow_long_h010", {"grid/follow_footing": True}, (0.05, 0.25), 0.25),
+    # volumetric locking at several particles per cell and the cell-averaged dilation rate
+    # (solver/volumetric_averaging; docs/mpm.md, "Volumetric locking")
+    ("ppc2_cell_h010", {"bodies/0/particles_per_cell": 2, "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("ppc3_cell_h010", {"bodies/0/particles_per_cell": 3, "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("ppc1_cell_h010", {"solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("ppc2_h005", {"grid/cell_size": 0.05, "bodies/0/particles_per_cell": 2}, (0.02, 0.05), 0.05),
+    ("ppc2_cell_h005", {"grid/cell_size": 0.05, "bodies/0/particles_per_cell": 2,
+                        "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("smooth_ppc2_h010", {"footing/interface": "smooth", "bodies/0/particles_per_cell": 2}, (0.02, 0.05), 0.05),
+    ("smooth_ppc2_cell_h010", {"footing/interface": "smooth", "bodies/0/particles_per_cell": 2,
+                               "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("follow_ppc2_h010", {"grid/follow_footing": True, "bodies/0/particles_per_cell": 2}, (0.02, 0.05), 0.05),
+    ("follow_ppc2_cell_h010", {"grid/follow_footing": True, "bodies/0/particles_per_cell": 2,
+                               "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("follow_ppc3_h010", {"grid/follow_footing": True, "bodies/0/particles_per_cell": 3}, (0.02, 0.05), 0.05),
+    ("follow_ppc3_cell_h010", {"grid/follow_footing": True, "bodies/0/particles_per_cell": 3,
+                               "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("follow_smooth_ppc2_h010", {"grid/follow_footing": True, "footing/interface": "smooth",
+                                 "bodies/0/particles_per_cell": 2}, (0.02, 0.05), 0.05),
+    ("follow_smooth_ppc2_cell_h010", {"grid/follow_footing": True, "footing/interface": "smooth",
+                                      "bodies/0/particles_per_cell": 2, "solver/volumetric_averaging": "cell"},
+     (0.02, 0.05), 0.05),
 ]
 
 
@@ -141,8 +164,9 @@ def main():
     for name, changes, window, stop in VARIANTS:
         variant = "; ".join(f"{k} = {v}" for k, v in changes.items()) or "as rough_h010"
         run(name, with_changes(scene(name, 0.1, "rough", 0.02, "XPIC", 20), changes, stop),
-            {"case": name, "variant": variant, "h_over_B": 0.1, "interface": "rough", "speed_m_per_s": 0.02,
-             "particle_update": "XPIC", "xpic_every": 20, "rows_follow": changes.get("grid/follow_footing", False)}, window)
+            {"case": name, "variant": variant, "h_over_B": changes.get("grid/cell_size", 0.1),
+             "interface": changes.get("footing/interface", "rough"), "speed_m_per_s": 0.02, "particle_update": "XPIC",
+             "xpic_every": 20, "rows_follow": changes.get("grid/follow_footing", False)}, window)
     with open(os.path.join(a.out, "prandtl.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()

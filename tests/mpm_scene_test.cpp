@@ -54,6 +54,8 @@ TEST(MpmScene, ErrorsNameThePath) {
                "/solver/particle_update", "FLIP, PIC, XPIC");
   expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "solver": {"stress_update": "middle"},)"),
                "/solver/stress_update", "average, first, last");
+  expect_error(replaced(R"({"name": "s",)", R"({"name": "s", "solver": {"volumetric_averaging": "node"},)"),
+               "/solver/volumetric_averaging", "none, cell");
   expect_error(replaced(R"("materials": {"soil": {"model": "linear_elastic", "parameters": {"E": 1000, "nu": 0.3}}})",
                         R"("materials": {"soil": "no/such/file.json"})"),
                "/materials/soil", "cannot open");

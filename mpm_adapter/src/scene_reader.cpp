@@ -78,8 +78,8 @@ BodySpec read_body(const json& j, const std::string& p, const Scene& s) {
 }
 
 Settings read_solver(const json& j, const std::string& p) {
-  f::allow_keys(j, {"cfl", "particle_update", "stress_update", "xpic_order", "xpic_every", "grid_damping",
-                    "particle_damping", "wave_speed_every", "mass_scaling", "threads"},
+  f::allow_keys(j, {"cfl", "particle_update", "stress_update", "volumetric_averaging", "xpic_order", "xpic_every",
+                    "grid_damping", "particle_damping", "wave_speed_every", "mass_scaling", "threads"},
                 p);
   Settings s;
   if (j.contains("cfl")) s.cfl = f::number(j["cfl"], p + "/cfl", {0.0, 1.0, true, false});
@@ -90,6 +90,10 @@ Settings read_solver(const json& j, const std::string& p) {
     s.stress_update = f::choice<StressUpdate>(
         j["stress_update"], p + "/stress_update",
         {{"average", StressUpdate::average}, {"first", StressUpdate::first}, {"last", StressUpdate::last}});
+  if (j.contains("volumetric_averaging"))
+    s.volumetric_averaging =
+        f::choice<VolumetricAveraging>(j["volumetric_averaging"], p + "/volumetric_averaging",
+                                       {{"none", VolumetricAveraging::none}, {"cell", VolumetricAveraging::cell}});
   if (j.contains("xpic_order")) s.xpic_order = static_cast<int>(f::integer(j["xpic_order"], p + "/xpic_order", 1, 16));
   if (j.contains("xpic_every")) s.xpic_every = static_cast<int>(f::integer(j["xpic_every"], p + "/xpic_every", 1, 100000));
   if (j.contains("grid_damping")) s.grid_damping = f::number(j["grid_damping"], p + "/grid_damping", {0.0, 1e4}, "1/s");

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "acst_mpm/dilation_averaging.hpp"
 #include "acst_mpm/particle_track.hpp"
 #include "acst_mpm/shape_functions.hpp"
 
@@ -214,16 +215,23 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   const int T = w.scatter.threads();
   std::vector<long long> failed(T, -1);
   std::vector<std::string> messages(T), reproducers(T);
+  const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
+  if (averaged) velocity_gradients_averaged(vx, vy);
   parallel_for(T, P.n, [&](int t, std::size_t p) {
     // Summed in locals: the array's address goes to the material below, and summing into it
     // made the compiler store it on every node of the stencil (bench/RESULTS.md 1g).
     double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
-    w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
-      Lxx += vx[i] * gx;
-      Lxy += vx[i] * gy;
-      Lyx += vy[i] * gx;
-      Lyy += vy[i] * gy;
-    });
+    if (averaged) {
+      const double* l = &w.L[4 * p];
+      Lxx = l[0], Lxy = l[1], Lyx = l[2], Lyy = l[3];
+    } else {
+      w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
+        Lxx += vx[i] * gx;
+        Lxy += vx[i] * gy;
+        Lyx += vy[i] * gx;
+        Lyy += vy[i] * gy;
+      });
+    }
     const double L[4] = {Lxx, Lxy, Lyx, Lyy};  // L_ij = dv_i/dx_j: xx xy yx yy
     double* F = &P.F[4 * p];
     const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
@@ -249,12 +257,42 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
     if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
   // The followed particles' frames (a handful: outside the loop above, which stays as it was).
   for (std::size_t k = 0; k < P.tracked.size(); ++k) {
+    const std::size_t p = static_cast<std::size_t>(P.tracked[k]);
     double L[4] = {0.0, 0.0, 0.0, 0.0};
-    w.stencil(static_cast<std::size_t>(P.tracked[k]), [&](std::size_t i, double, double gx, double gy) {
-      L[0] += vx[i] * gx, L[1] += vx[i] * gy, L[2] += vy[i] * gx, L[3] += vy[i] * gy;
-    });
+    if (averaged)
+      std::copy_n(&w.L[4 * p], 4, L);
+    else
+      w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
+        L[0] += vx[i] * gx, L[1] += vx[i] * gy, L[2] += vy[i] * gx, L[3] += vy[i] * gy;
+      });
     follow_track(&P.track_frame[track_frame_size * k], L, dt_half);
   }
+}
+
+// Every particle's velocity gradient into the scratch, then each dilation rate replaced by the
+// mean over the particles in its cell (docs/mpm.md, "Volumetric locking").
+void Simulation::velocity_gradients_averaged(const double* vx, const double* vy) {
+  StepScratch& w = work_;
+  const Particles& P = particles_;
+  w.L.resize(4 * P.n);
+  w.cell.resize(P.n);
+  w.cell_volume.resize(P.n);
+  parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
+    double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
+    w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
+      Lxx += vx[i] * gx;
+      Lxy += vx[i] * gy;
+      Lyx += vy[i] * gx;
+      Lyy += vy[i] * gy;
+    });
+    double* l = &w.L[4 * p];
+    l[0] = Lxx, l[1] = Lxy, l[2] = Lyx, l[3] = Lyy;
+    const auto i = static_cast<std::size_t>(std::floor((P.x[p] - grid_.x0) / grid_.h));
+    const auto j = static_cast<std::size_t>(std::floor((P.y[p] - grid_.y0) / grid_.hy));
+    w.cell[p] = j * static_cast<std::size_t>(grid_.nx) + i;
+    w.cell_volume[p] = P.volume(p);
+  });
+  average_dilation_over_cells(w.L, w.cell, w.cell_volume, grid_.nodes(), w.cell_sum, w.cell_weight);
 }
 
 void Simulation::xpic_velocity(int order) {

@@ -35,10 +35,15 @@ enum class ParticleUpdate { FLIP, PIC, XPIC };
 // half the material calls.
 enum class StressUpdate { average, first, last };
 
+// The particles' dilation rates as the velocity field gives them, or each cell's mean (against
+// volumetric locking at several particles per cell; docs/mpm.md, "Volumetric locking").
+enum class VolumetricAveraging { none, cell };
+
 struct Settings {
   double cfl = 0.5;
   ParticleUpdate update = ParticleUpdate::XPIC;
   StressUpdate stress_update = StressUpdate::average;
+  VolumetricAveraging volumetric_averaging = VolumetricAveraging::none;
   int xpic_order = 4;   // m of XPIC(m)
   int xpic_every = 20;  // XPIC on every k-th step, FLIP between
   double grid_damping = 0.5;      // alpha_g, 1/s
@@ -123,6 +128,7 @@ class Simulation {
 
   void prepare();
   void follow_footing();
+  void velocity_gradients_averaged(const double* vx, const double* vy);
   void refresh_wave_speeds();
   double stiffest_wave_speed() const;
   double contact_stiffness(std::size_t particle, double wave_speed) const;

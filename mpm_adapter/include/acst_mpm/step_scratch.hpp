@@ -25,6 +25,10 @@ struct StepScratch {
   std::vector<double> pvx, pvy;
   // Per-particle footing contact of this step (force in N/m and where it acts).
   std::vector<ContactForce> contact;
+  // With solver/volumetric_averaging "cell": every particle's velocity gradient (xx xy yx yy), cell
+  // and volume, and the cells' sums.
+  std::vector<double> L, cell_volume, cell_sum, cell_weight;
+  std::vector<std::size_t> cell;
   int nx = 0;
 
   // f(node, S, dS/dx, dS/dy) over particle p's 4 x 4 stencil.
