@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <type_traits>
 
 #include "acst_mpm/dilation_averaging.hpp"
 #include "acst_mpm/particle_track.hpp"
@@ -217,42 +218,49 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   std::vector<std::string> messages(T), reproducers(T);
   const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
   if (averaged) velocity_gradients_averaged(vx, vy);
-  parallel_for(T, P.n, [&](int t, std::size_t p) {
-    // Summed in locals: the array's address goes to the material below, and summing into it
-    // made the compiler store it on every node of the stencil (bench/RESULTS.md 1g).
-    double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
-    if (averaged) {
-      const double* l = &w.L[4 * p];
-      Lxx = l[0], Lxy = l[1], Lyx = l[2], Lyy = l[3];
-    } else {
-      w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
-        Lxx += vx[i] * gx;
-        Lxy += vx[i] * gy;
-        Lyx += vy[i] * gx;
-        Lyy += vy[i] * gy;
-      });
-    }
-    const double L[4] = {Lxx, Lxy, Lyx, Lyy};  // L_ij = dv_i/dx_j: xx xy yx yy
-    double* F = &P.F[4 * p];
-    const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
-    F[0] += dt_half * (L[0] * F0 + L[1] * F2);
-    F[1] += dt_half * (L[0] * F1 + L[1] * F3);
-    F[2] += dt_half * (L[2] * F0 + L[3] * F2);
-    F[3] += dt_half * (L[2] * F1 + L[3] * F3);
-    double* e = &P.strain[3 * p];
-    e[0] += L[0] * dt_half;
-    e[1] += L[3] * dt_half;
-    e[2] += 0.5 * (L[1] + L[2]) * dt_half;
-    std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
-    bool free = false;
-    const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p, L,
-                                                            dt_half, free, reproducer);
-    P.stress_free[p] = free;
-    if (st.code != ACST_OK && failed[t] < 0) {
-      failed[t] = static_cast<long long>(p);
-      messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
-    }
-  });
+  // One loop per setting, chosen here: the default's loop stays as it was without the option.
+  auto update_all = [&](auto averaged_gradients) {
+    parallel_for(T, P.n, [&](int t, std::size_t p) {
+      // Summed in locals: the array's address goes to the material below, and summing into it
+      // made the compiler store it on every node of the stencil (bench/RESULTS.md 1g).
+      double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
+      if constexpr (decltype(averaged_gradients)::value) {
+        const double* l = &w.L[4 * p];
+        Lxx = l[0], Lxy = l[1], Lyx = l[2], Lyy = l[3];
+      } else {
+        w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
+          Lxx += vx[i] * gx;
+          Lxy += vx[i] * gy;
+          Lyx += vy[i] * gx;
+          Lyy += vy[i] * gy;
+        });
+      }
+      const double L[4] = {Lxx, Lxy, Lyx, Lyy};  // L_ij = dv_i/dx_j: xx xy yx yy
+      double* F = &P.F[4 * p];
+      const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
+      F[0] += dt_half * (L[0] * F0 + L[1] * F2);
+      F[1] += dt_half * (L[0] * F1 + L[1] * F3);
+      F[2] += dt_half * (L[2] * F0 + L[3] * F2);
+      F[3] += dt_half * (L[2] * F1 + L[3] * F3);
+      double* e = &P.strain[3 * p];
+      e[0] += L[0] * dt_half;
+      e[1] += L[3] * dt_half;
+      e[2] += 0.5 * (L[1] + L[2]) * dt_half;
+      std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
+      bool free = false;
+      const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p,
+                                                              L, dt_half, free, reproducer);
+      P.stress_free[p] = free;
+      if (st.code != ACST_OK && failed[t] < 0) {
+        failed[t] = static_cast<long long>(p);
+        messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
+      }
+    });
+  };
+  if (averaged)
+    update_all(std::true_type{});
+  else
+    update_all(std::false_type{});
   for (int t = 0; t < T; ++t)
     if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
   // The followed particles' frames (a handful: outside the loop above, which stays as it was).
