@@ -218,7 +218,8 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   std::vector<std::string> messages(T), reproducers(T);
   const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
   if (averaged) velocity_gradients_averaged(vx, vy);
-  // One loop per setting, chosen here: the default's loop stays as it was without the option.
+  // The loop is instantiated once per setting and chosen here: a branch inside it cost the
+  // default 1-2 % (bench/RESULTS.md 1t).
   auto update_all = [&](auto averaged_gradients) {
     parallel_for(T, P.n, [&](int t, std::size_t p) {
       // Summed in locals: the array's address goes to the material below, and summing into it
