@@ -96,6 +96,11 @@ VARIANTS = [
     ("follow_smooth_ppc2_cell_h010", {"grid/follow_footing": True, "footing/interface": "smooth",
                                       "bodies/0/particles_per_cell": 2, "solver/volumetric_averaging": "cell"},
      (0.02, 0.05), 0.05),
+    ("follow_ppc2_cell_h005", {"grid/cell_size": 0.05, "grid/follow_footing": True, "bodies/0/particles_per_cell": 2,
+                               "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
+    ("follow_smooth_ppc2_cell_h005", {"grid/cell_size": 0.05, "grid/follow_footing": True,
+                                      "footing/interface": "smooth", "bodies/0/particles_per_cell": 2,
+                                      "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
 ]
 
 
