@@ -222,21 +222,11 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   // default 1-2 % (bench/RESULTS.md 1t).
   auto update_all = [&](auto averaged_gradients) {
     parallel_for(T, P.n, [&](int t, std::size_t p) {
-      // Summed in locals: the array's address goes to the material below, and summing into it
-      // made the compiler store it on every node of the stencil (bench/RESULTS.md 1g).
-      double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
-      if constexpr (decltype(averaged_gradients)::value) {
-        const double* l = &w.L[4 * p];
-        Lxx = l[0], Lxy = l[1], Lyx = l[2], Lyy = l[3];
-      } else {
-        w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
-          Lxx += vx[i] * gx;
-          Lxy += vx[i] * gy;
-          Lyx += vy[i] * gx;
-          Lyy += vy[i] * gy;
-        });
-      }
-      const double L[4] = {Lxx, Lxy, Lyx, Lyy};  // L_ij = dv_i/dx_j: xx xy yx yy
+      std::array<double, 4> L;  // L_ij = dv_i/dx_j: xx xy yx yy
+      if constexpr (decltype(averaged_gradients)::value)
+        std::copy_n(&w.L[4 * p], 4, L.begin());
+      else
+        L = w.velocity_gradient(p, vx, vy);
       double* F = &P.F[4 * p];
       const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
       F[0] += dt_half * (L[0] * F0 + L[1] * F2);
@@ -250,7 +240,7 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
       std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
       bool free = false;
       const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p,
-                                                              L, dt_half, free, reproducer);
+                                                              L.data(), dt_half, free, reproducer);
       P.stress_free[p] = free;
       if (st.code != ACST_OK && failed[t] < 0) {
         failed[t] = static_cast<long long>(p);
@@ -267,14 +257,12 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   // The followed particles' frames (a handful: outside the loop above, which stays as it was).
   for (std::size_t k = 0; k < P.tracked.size(); ++k) {
     const std::size_t p = static_cast<std::size_t>(P.tracked[k]);
-    double L[4] = {0.0, 0.0, 0.0, 0.0};
+    std::array<double, 4> L;
     if (averaged)
-      std::copy_n(&w.L[4 * p], 4, L);
+      std::copy_n(&w.L[4 * p], 4, L.begin());
     else
-      w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
-        L[0] += vx[i] * gx, L[1] += vx[i] * gy, L[2] += vy[i] * gx, L[3] += vy[i] * gy;
-      });
-    follow_track(&P.track_frame[track_frame_size * k], L, dt_half);
+      L = w.velocity_gradient(p, vx, vy);
+    follow_track(&P.track_frame[track_frame_size * k], L.data(), dt_half);
   }
 }
 
@@ -285,23 +273,16 @@ void Simulation::velocity_gradients_averaged(const double* vx, const double* vy)
   const Particles& P = particles_;
   w.L.resize(4 * P.n);
   w.cell.resize(P.n);
-  w.cell_volume.resize(P.n);
+  w.volume.resize(P.n);
   parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
-    double Lxx = 0.0, Lxy = 0.0, Lyx = 0.0, Lyy = 0.0;
-    w.stencil(p, [&](std::size_t i, double, double gx, double gy) {
-      Lxx += vx[i] * gx;
-      Lxy += vx[i] * gy;
-      Lyx += vy[i] * gx;
-      Lyy += vy[i] * gy;
-    });
-    double* l = &w.L[4 * p];
-    l[0] = Lxx, l[1] = Lxy, l[2] = Lyx, l[3] = Lyy;
+    const std::array<double, 4> L = w.velocity_gradient(p, vx, vy);
+    std::copy(L.begin(), L.end(), &w.L[4 * p]);
     const auto i = static_cast<std::size_t>(std::floor((P.x[p] - grid_.x0) / grid_.h));
     const auto j = static_cast<std::size_t>(std::floor((P.y[p] - grid_.y0) / grid_.hy));
     w.cell[p] = j * static_cast<std::size_t>(grid_.nx) + i;
-    w.cell_volume[p] = P.volume(p);
+    w.volume[p] = P.volume(p);
   });
-  average_dilation_over_cells(w.L, w.cell, w.cell_volume, grid_.nodes(), w.cell_sum, w.cell_weight);
+  average_dilation_over_cells(w.L, w.cell, w.volume, grid_.nodes(), w.cell_sum, w.cell_weight);
 }
 
 void Simulation::xpic_velocity(int order) {

@@ -2,6 +2,7 @@
 // What one MPM step works with besides the particles: the particles' shape functions, the nodal
 // fields, the nodal constraints and per-thread scatter buffers. Rebuilt by Simulation::prepare;
 // a copy is a full copy (each Simulation owns its own).
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -26,8 +27,8 @@ struct StepScratch {
   // Per-particle footing contact of this step (force in N/m and where it acts).
   std::vector<ContactForce> contact;
   // With solver/volumetric_averaging "cell": every particle's velocity gradient (xx xy yx yy), cell
-  // and volume, and the cells' sums.
-  std::vector<double> L, cell_volume, cell_sum, cell_weight;
+  // and current volume, and the cells' sums.
+  std::vector<double> L, volume, cell_sum, cell_weight;
   std::vector<std::size_t> cell;
   int nx = 0;
 
@@ -40,6 +41,20 @@ struct StepScratch {
       const std::size_t row = static_cast<std::size_t>(fj + b) * nx + fi;
       for (int a = 0; a < 4; ++a) f(row + a, wx[4 * p + a] * wyb, dwx[4 * p + a] * wyb, wx[4 * p + a] * dwyb);
     }
+  }
+
+  // Particle p's velocity gradient L_ij = dv_i/dx_j (xx xy yx yy) from the nodal velocities. Summed
+  // in locals: summing into an array whose address goes on to the material made the compiler
+  // store it on every node of the stencil (bench/RESULTS.md 1g).
+  std::array<double, 4> velocity_gradient(std::size_t p, const double* vx, const double* vy) const {
+    double xx = 0.0, xy = 0.0, yx = 0.0, yy = 0.0;
+    stencil(p, [&](std::size_t i, double, double gx, double gy) {
+      xx += vx[i] * gx;
+      xy += vx[i] * gy;
+      yx += vy[i] * gx;
+      yy += vy[i] * gy;
+    });
+    return {xx, xy, yx, yy};
   }
 };
 
