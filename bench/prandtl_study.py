@@ -14,6 +14,10 @@ scene of tests/mpm_footing_test.cpp). q = V/B averaged over S/B 0.02-0.05 agains
     half a cell off the nodes, the node-row footing, and the load further on (S/B 0.05-0.25);
     with the rows following: Coulomb friction, the edges half a cell off, node rows, 0.01 m/s and
     the load further on.
+  - where the scene is what Prandtl's solution describes (docs/mpm.md, "What Prandtl's load
+    measures"): E = 10^4 s_u, which collapses by S/B 0.003, every step's load over S/B 0.005-0.01;
+    the particle update's filter every 20, 100, 500, 1000 steps and FLIP alone, rows following and
+    fixed, B/10 and B/20, rough and smooth.
 Writes OUT/prandtl.csv and OUT/prandtl.png (q over Prandtl against h/B). B/40 takes minutes.
 
   python3 bench/prandtl_study.py [--out DIR] [--threads N] [--tool PATH]
@@ -74,6 +78,9 @@ VARIANTS = [
     ("follow_node_rows_h010", {"grid/follow_footing": True, "footing/contact": "node_rows"}, (0.02, 0.05), 0.05),
     ("follow_v001_h010", {"grid/follow_footing": True, "footing/speed": 0.01}, (0.02, 0.05), 0.05),
     ("follow_long_h010", {"grid/follow_footing": True}, (0.05, 0.25), 0.25),
+    ("follow_flip_h010", {"grid/follow_footing": True, "solver/particle_update": "FLIP"}, (0.02, 0.05), 0.05),
+    ("follow_smooth_flip_h010", {"grid/follow_footing": True, "footing/interface": "smooth",
+                                 "solver/particle_update": "FLIP"}, (0.02, 0.05), 0.05),
     # volumetric locking at several particles per cell and the cell-averaged dilation rate
     # (solver/volumetric_averaging; docs/mpm.md, "Volumetric locking")
     ("ppc2_cell_h010", {"bodies/0/particles_per_cell": 2, "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
@@ -102,6 +109,19 @@ VARIANTS = [
                                       "footing/interface": "smooth", "bodies/0/particles_per_cell": 2,
                                       "solver/volumetric_averaging": "cell"}, (0.02, 0.05), 0.05),
 ]
+
+# E = 10^4 s_u, every step's load averaged over S/B 0.005-0.01, to S/B 0.012: name, cell size,
+# interface, rows follow the footing, particle update, XPIC every, speed (m/s).
+RIGID_PLASTIC = [
+    (f"rp_{'follow' if follow else 'fixed'}_{interface}_h{round(h * 100):03d}_{tag}", h, interface, follow, update, every,
+     0.02)
+    for follow, h, tags in ((True, 0.1, ("xpic20", "xpic100", "xpic500", "xpic1000", "flip")), (True, 0.05, ("xpic20", "xpic500", "flip")),
+                            (False, 0.1, ("xpic20", "xpic500", "flip")), (False, 0.05, ("xpic500",)))
+    for interface in ("rough", "smooth")
+    for tag in tags
+    for update, every in [("FLIP", 20) if tag == "flip" else ("XPIC", int(tag[4:]))]
+] + [("rp_follow_rough_h010_xpic20_v0005", 0.1, "rough", True, "XPIC", 20, 0.005),
+     ("rp_follow_rough_h010_xpic500_v001", 0.1, "rough", True, "XPIC", 500, 0.01)]
 
 
 def with_changes(s, changes, stop):
@@ -170,21 +190,34 @@ def main():
         variant = "; ".join(f"{k} = {v}" for k, v in changes.items()) or "as rough_h010"
         run(name, with_changes(scene(name, 0.1, "rough", 0.02, "XPIC", 20), changes, stop),
             {"case": name, "variant": variant, "h_over_B": changes.get("grid/cell_size", 0.1),
-             "interface": changes.get("footing/interface", "rough"), "speed_m_per_s": 0.02, "particle_update": "XPIC",
-             "xpic_every": 20, "rows_follow": changes.get("grid/follow_footing", False)}, window)
+             "interface": changes.get("footing/interface", "rough"), "speed_m_per_s": changes.get("footing/speed", 0.02),
+             "particle_update": changes.get("solver/particle_update", "XPIC"),
+             "xpic_every": 20 if changes.get("solver/particle_update", "XPIC") == "XPIC" else "", "rows_follow": changes.get("grid/follow_footing", False)}, window)
+    for name, h, interface, follow, update, every, speed in RIGID_PLASTIC:
+        description = with_changes(scene(name, h, interface, speed, update, every, follow),
+                                   {"materials/clay/parameters/E": 1e5, "output/every_step_csv": True}, 0.012)
+        run(name, description,
+            {"case": name, "variant": "materials/clay/parameters/E = 100000", "h_over_B": h, "interface": interface,
+             "speed_m_per_s": speed, "particle_update": update, "xpic_every": every if update == "XPIC" else "",
+             "rows_follow": follow}, (0.005, 0.01))
     with open(os.path.join(a.out, "prandtl.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
     plots = []
-    for prefix, title in (("rough_h", "fixed rows, rough"), ("follow_rough_h", "rows follow the footing, rough"),
-                          ("follow_smooth_h", "rows follow the footing, smooth")):
-        ladder = {r["h_over_B"]: r["q_over_prandtl"] for r in rows if r["case"].startswith(prefix)}
+    for prefix, suffix, title in (
+            ("rough_h", "", "fixed rows, rough, E = 1000 s_u, XPIC every 20"),
+            ("follow_rough_h", "", "rows follow, rough, E = 1000 s_u, XPIC every 20"),
+            ("follow_smooth_h", "", "rows follow, smooth, E = 1000 s_u, XPIC every 20"),
+            ("rp_follow_rough_h", "_xpic500", "rows follow, rough, E = 10^4 s_u, XPIC every 500"),
+            ("rp_follow_smooth_h", "_xpic500", "rows follow, smooth, E = 10^4 s_u, XPIC every 500")):
+        ladder = {r["h_over_B"]: r["q_over_prandtl"] for r in rows
+                  if r["case"].startswith(prefix) and r["case"].endswith(suffix)}
         hs = sorted(ladder, reverse=True)
         for h0, h1 in zip(hs, hs[1:]):
             print(f"{title}: first-order extrapolation from B/{1 / h0:.0f} and B/{1 / h1:.0f}: "
                   f"{2 * ladder[h1] - ladder[h0]:.3f}")
-        data = os.path.join(a.out, f"prandtl_{prefix}ladder.dat")
+        data = os.path.join(a.out, f"prandtl_{prefix}{suffix}ladder.dat")
         with open(data, "w") as f:
             for h in hs:
                 f.write(f"{h} {ladder[h]}\n")
@@ -192,7 +225,8 @@ def main():
     script = "\n".join([
         "set terminal pngcairo size 800,560",
         f"set output {gp_quoted(os.path.join(a.out, 'prandtl.png'))}",
-        "set xlabel 'cell size h / B'", "set ylabel 'q / (2 + pi) s_u  (S/B 0.02-0.05)'",
+        "set xlabel 'cell size h / B'",
+        "set ylabel 'q / (2 + pi) s_u  (S/B 0.02-0.05; E = 10^4 s_u: 0.005-0.01)'",
         "set xrange [0:0.11]", "set yrange [0.9:1.25]", "set key top left", "set grid",
         "plot " + ", ".join(plots) + ", 1 with lines dt 2 lc rgb 'black' title 'Prandtl (2 + pi) s_u'", ""])
     subprocess.run(["gnuplot"], input=script, text=True, check=True)
