@@ -111,15 +111,16 @@ VARIANTS = [
 ]
 
 # E = 10^4 s_u, every step's load averaged over S/B 0.005-0.01, to S/B 0.012: name, cell size,
-# interface, rows follow the footing, particle update, XPIC every, speed (m/s).
+# interface, rows follow the footing, particle update, XPIC every, speed (m/s). The ladders: rows
+# following or fixed, the cell, and the particle updates run for each interface.
+RIGID_PLASTIC_LADDERS = ((True, 0.1, ("xpic20", "xpic100", "xpic500", "xpic1000", "flip")),
+                         (True, 0.05, ("xpic20", "xpic500", "flip")),
+                         (False, 0.1, ("xpic20", "xpic500", "flip")),
+                         (False, 0.05, ("xpic500",)))
 RIGID_PLASTIC = [
-    (f"rp_{'follow' if follow else 'fixed'}_{interface}_h{round(h * 100):03d}_{tag}", h, interface, follow, update, every,
-     0.02)
-    for follow, h, tags in ((True, 0.1, ("xpic20", "xpic100", "xpic500", "xpic1000", "flip")), (True, 0.05, ("xpic20", "xpic500", "flip")),
-                            (False, 0.1, ("xpic20", "xpic500", "flip")), (False, 0.05, ("xpic500",)))
-    for interface in ("rough", "smooth")
-    for tag in tags
-    for update, every in [("FLIP", 20) if tag == "flip" else ("XPIC", int(tag[4:]))]
+    (f"rp_{'follow' if follow else 'fixed'}_{interface}_h{round(h * 100):03d}_{update}", h, interface, follow,
+     "FLIP" if update == "flip" else "XPIC", 20 if update == "flip" else int(update[len("xpic"):]), 0.02)
+    for follow, h, updates in RIGID_PLASTIC_LADDERS for interface in ("rough", "smooth") for update in updates
 ] + [("rp_follow_rough_h010_xpic20_v0005", 0.1, "rough", True, "XPIC", 20, 0.005),
      ("rp_follow_rough_h010_xpic500_v001", 0.1, "rough", True, "XPIC", 500, 0.01)]
 
@@ -188,11 +189,12 @@ def main():
             (0.02, 0.05))
     for name, changes, window, stop in VARIANTS:
         variant = "; ".join(f"{k} = {v}" for k, v in changes.items()) or "as rough_h010"
+        update = changes.get("solver/particle_update", "XPIC")
         run(name, with_changes(scene(name, 0.1, "rough", 0.02, "XPIC", 20), changes, stop),
             {"case": name, "variant": variant, "h_over_B": changes.get("grid/cell_size", 0.1),
              "interface": changes.get("footing/interface", "rough"), "speed_m_per_s": changes.get("footing/speed", 0.02),
-             "particle_update": changes.get("solver/particle_update", "XPIC"),
-             "xpic_every": 20 if changes.get("solver/particle_update", "XPIC") == "XPIC" else "", "rows_follow": changes.get("grid/follow_footing", False)}, window)
+             "particle_update": update, "xpic_every": 20 if update == "XPIC" else "",
+             "rows_follow": changes.get("grid/follow_footing", False)}, window)
     for name, h, interface, follow, update, every, speed in RIGID_PLASTIC:
         description = with_changes(scene(name, h, interface, speed, update, every, follow),
                                    {"materials/clay/parameters/E": 1e5, "output/every_step_csv": True}, 0.012)
