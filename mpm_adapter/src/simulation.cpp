@@ -221,12 +221,16 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   // The loop is instantiated once per setting and chosen here: a branch inside it cost the
   // default 1-2 % (bench/RESULTS.md 1t).
   auto update_all = [&](auto averaged_gradients) {
-    parallel_for(T, P.n, [&](int t, std::size_t p) {
-      std::array<double, 4> L;  // L_ij = dv_i/dx_j: xx xy yx yy
+    const auto gradient = [&](std::size_t p) {  // L_ij = dv_i/dx_j: xx xy yx yy
+      std::array<double, 4> L;
       if constexpr (decltype(averaged_gradients)::value)
         std::copy_n(&w.L[4 * p], 4, L.begin());
       else
         L = w.velocity_gradient(p, vx, vy);
+      return L;
+    };
+    parallel_for(T, P.n, [&](int t, std::size_t p) {
+      const std::array<double, 4> L = gradient(p);
       double* F = &P.F[4 * p];
       const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
       F[0] += dt_half * (L[0] * F0 + L[1] * F2);
@@ -247,23 +251,17 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
         messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
       }
     });
+    for (int t = 0; t < T; ++t)
+      if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
+    // The followed particles' frames (a handful: outside the loop above, which stays as it was).
+    for (std::size_t k = 0; k < P.tracked.size(); ++k)
+      follow_track(&P.track_frame[track_frame_size * k], gradient(static_cast<std::size_t>(P.tracked[k])).data(),
+                   dt_half);
   };
   if (averaged)
     update_all(std::true_type{});
   else
     update_all(std::false_type{});
-  for (int t = 0; t < T; ++t)
-    if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
-  // The followed particles' frames (a handful: outside the loop above, which stays as it was).
-  for (std::size_t k = 0; k < P.tracked.size(); ++k) {
-    const std::size_t p = static_cast<std::size_t>(P.tracked[k]);
-    std::array<double, 4> L;
-    if (averaged)
-      std::copy_n(&w.L[4 * p], 4, L.begin());
-    else
-      L = w.velocity_gradient(p, vx, vy);
-    follow_track(&P.track_frame[track_frame_size * k], L.data(), dt_half);
-  }
 }
 
 // Every particle's velocity gradient into the scratch, then each dilation rate replaced by the
