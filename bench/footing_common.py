@@ -79,12 +79,12 @@ def write_table(path, fields, rows):
         w.writerows(rows)
 
 
-def plot_beside_kimura(png, panels, stop_s_over_b):
+def plot_beside_kimura(png, panels, stop_s_over_b, key="bottom right"):
     """One panel per Kimura test, {test: (title, [(load record, label), ...])}, each with the
     test's measured curve (data/lab/kimura_1985/TEST.csv)."""
-    lines = ["set terminal pngcairo size 1400,600 noenhanced", "set datafile separator ','", "set datafile commentschars '#'",
-             f"set output {gp_quoted(png)}", "set multiplot layout 1,2",
-             "set grid", "set key bottom right", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'",
+    lines = [f"set terminal pngcairo size {700 * len(panels)},600 noenhanced", "set datafile separator ','",
+             "set datafile commentschars '#'", f"set output {gp_quoted(png)}", f"set multiplot layout 1,{len(panels)}",
+             "set grid", f"set key {key}", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'",
              f"set xrange [0:{stop_s_over_b}]", "set yrange [0:2600]"]
     for test, (title, curves) in panels.items():
         plots = [f"{gp_quoted(record)} using 'S_over_B':'q_kPa' with lines lw 2 title {gp_quoted(label)}" for record, label in curves]
