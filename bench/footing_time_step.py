@@ -27,7 +27,7 @@ import sys
 
 from footing_common import ROOT, plot_beside_kimura, rms_difference_pct, scene_with_absolute_paths, study_arguments, \
     value_at, write_table
-from footing_loading_rate import first_peak, run_case
+from footing_loading_rate import run_case
 
 SCENE = os.path.join(ROOT, "data", "scenes", "mpm", "kimura_V85.6_alpha0_half.json")
 STOP_S_OVER_B = 0.3
