@@ -25,11 +25,10 @@ processes with --only.
 import os
 import sys
 
-from footing_common import ROOT, plot_beside_kimura, rms_difference_pct, scene_with_absolute_paths, study_arguments, \
-    value_at, write_table
+from footing_common import plot_beside_kimura, rms_difference_pct, study_arguments, value_at, write_table
 from footing_loading_rate import run_case
+from footing_loading_rate import scene_for as loading_rate_scene
 
-SCENE = os.path.join(ROOT, "data", "scenes", "mpm", "kimura_V85.6_alpha0_half.json")
 STOP_S_OVER_B = 0.3
 # (name, role, cfl, XPIC interval in steps, K0)
 CASES = [("reference", "reference", 0.5, 20, 0.4),
@@ -45,11 +44,10 @@ RMS_WINDOWS = (0.09, 0.15, 0.3)
 
 
 def scene_for(name, cfl, xpic_every, K0):
-    s = scene_with_absolute_paths(SCENE)
+    """The loading-rate study's V85.6 scene at the study's speed, with this case's changes."""
+    s = loading_rate_scene("V85.6", 1, 1, cfl)
     s["name"] = name
-    s["output"] = {"lab_curve": s["output"]["lab_curve"], "lab_label": s["output"]["lab_label"],
-                   "vtk_every_S_over_B": 1.0, "checkpoint_every_s": 0}
-    s["solver"].update({"cfl": cfl, "xpic_every": xpic_every, "stress_update": "first"})
+    s["solver"]["xpic_every"] = xpic_every
     s["initial_stress"]["K0"] = K0
     s["stop"]["S_over_B"] = STOP_S_OVER_B
     return s
