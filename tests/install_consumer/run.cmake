@@ -41,8 +41,13 @@ endforeach()
 # 2. Configure and build the consumer against the installed tree only.
 set(flags "")
 if(lib_ACST_SANITIZE)
+  set(link_flags -fsanitize=address,undefined)
+  if(lib_CMAKE_C_COMPILER MATCHES "clang")
+    # clang's C driver leaves out UBSan's C++ handlers, which the library calls (CMakeLists.txt).
+    string(APPEND link_flags " -fsanitize-link-c++-runtime -lstdc++")
+  endif()
   set(flags -DCMAKE_C_FLAGS=-fsanitize=address,undefined -DCMAKE_CXX_FLAGS=-fsanitize=address,undefined
-            -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined)
+            "-DCMAKE_EXE_LINKER_FLAGS=${link_flags}")
 endif()
 run_step("configure consumer" "${CMAKE_COMMAND}" -S "${consumer_source}" -B "${consumer_build}"
   -G "${lib_CMAKE_GENERATOR}" "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${lib_CMAKE_BUILD_TYPE}"
