@@ -19,6 +19,8 @@
 #include "acst/material.hpp"
 #include "test_materials.hpp"
 
+namespace c_abi_consistency_test {
+
 namespace {
 
 using acst::Mat6;
@@ -602,3 +604,5 @@ TEST(CAbiConsistency, UmatTurnsTheFabricWithDrotAndGivesTheRotatedAnswer) {
   EXPECT_EQ(umat.pnewdt, ACST_UMAT_UNRECOVERABLE_PNEWDT);
   for (int i = 0; i < ACST_NSTATV; ++i) EXPECT_EQ(q_bad[i], statev[i]);
 }
+
+}  // namespace c_abi_consistency_test

@@ -11,6 +11,8 @@
 #include "abi_model.hpp"
 #include "acst.h"
 
+namespace c_abi_linear_elastic_test {
+
 namespace {
 
 using acst::test::AbiModel;
@@ -172,3 +174,5 @@ TEST(CAbiLinearElasticBadInput, UnknownModelListsEveryKind) {
 }
 
 }  // namespace
+
+}  // namespace c_abi_linear_elastic_test

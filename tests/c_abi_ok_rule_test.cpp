@@ -16,6 +16,8 @@
 #include "abi_model.hpp"
 #include "test_materials.hpp"
 
+namespace c_abi_ok_rule_test {
+
 namespace {
 
 using acst::test::AbiModel;
@@ -265,3 +267,5 @@ TEST(AbiOkRule, RandomStatesAndIncrementsOfEverySizeKeepTheRule) {
     EXPECT_GT(ok, calls / 4) << acst_model_kind(m.get());
   }
 }
+
+}  // namespace c_abi_ok_rule_test

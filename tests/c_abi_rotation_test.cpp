@@ -15,6 +15,8 @@
 #include "acst.h"
 #include "test_materials.hpp"
 
+namespace c_abi_rotation_test {
+
 namespace {
 
 using acst::test::AbiModel;
@@ -287,3 +289,5 @@ TEST(CAbiRotation, UpdateRotatedChangesNothingWhenItFails) {
 }
 
 }  // namespace
+
+}  // namespace c_abi_rotation_test

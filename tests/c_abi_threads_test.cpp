@@ -14,6 +14,8 @@
 #include "acst.h"
 #include "test_materials.hpp"
 
+namespace c_abi_threads_test {
+
 namespace {
 
 constexpr int thread_count = 4;
@@ -163,3 +165,5 @@ TEST(CAbiThreads, BatchOnDisjointSlicesFromThreadsEqualsSerialBatch) {
 }
 
 }  // namespace
+
+}  // namespace c_abi_threads_test

@@ -16,6 +16,8 @@
 #include "acst.h"
 #include "test_materials.hpp"
 
+namespace c_abi_umat_protocol_test {
+
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -196,3 +198,5 @@ TEST(UmatProtocol, HugeIncrementIsPhysicalOrACutBack) {
 }
 
 }  // namespace
+
+}  // namespace c_abi_umat_protocol_test

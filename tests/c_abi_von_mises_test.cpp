@@ -13,6 +13,8 @@
 #include "abi_model.hpp"
 #include "acst.h"
 
+namespace c_abi_von_mises_test {
+
 namespace {
 
 using acst::test::AbiModel;
@@ -259,3 +261,5 @@ TEST(CAbiVonMisesThreads, OneHandleManyThreadsBitIdenticalToSerialRun) {
 }
 
 }  // namespace
+
+}  // namespace c_abi_von_mises_test

@@ -15,7 +15,7 @@
 #include "fit_descriptions.hpp"
 #include "scratch.hpp"
 
-namespace acst::calibration {
+namespace acst::calibration::calibration_cross_validation_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -167,4 +167,4 @@ TEST(CrossValidationCli, WritesTheReportAndRefusesAForeignFolder) {
 }
 
 }  // namespace
-}  // namespace acst::calibration
+}  // namespace acst::calibration::calibration_cross_validation_test

@@ -12,7 +12,7 @@
 #include "acst_calibration/fit_spec.hpp"
 #include "acst_calibration/problem.hpp"
 
-namespace acst::calibration {
+namespace acst::calibration::calibration_fit_spec_test {
 namespace {
 
 const std::string base_dir = std::string(ACST_SOURCE_DIR) + "/data/calibration";
@@ -162,4 +162,4 @@ TEST(FitCli, InvalidDescriptionWritesNothing) {
 }
 
 }  // namespace
-}  // namespace acst::calibration
+}  // namespace acst::calibration::calibration_fit_spec_test

@@ -9,7 +9,7 @@
 #include "acst_calibration/problem.hpp"
 #include "acst_driver/lab_data.hpp"
 
-namespace acst::calibration {
+namespace acst::calibration::calibration_problem_test {
 namespace {
 
 using nlohmann::json;
@@ -87,4 +87,4 @@ TEST(CalibrationProblem, ResidualIsTheWeightedNormalisedDifference) {
 }
 
 }  // namespace
-}  // namespace acst::calibration
+}  // namespace acst::calibration::calibration_problem_test

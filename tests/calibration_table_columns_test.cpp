@@ -14,7 +14,7 @@
 #include "fit_descriptions.hpp"
 #include "scratch.hpp"
 
-namespace acst::calibration {
+namespace acst::calibration::calibration_table_columns_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -159,4 +159,4 @@ TEST(BundledDescriptions, TableRowsAndFolds) {
 }
 
 }  // namespace
-}  // namespace acst::calibration
+}  // namespace acst::calibration::calibration_table_columns_test

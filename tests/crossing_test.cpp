@@ -11,7 +11,7 @@
 #include "strain_path_replay.hpp"
 #include "test_materials.hpp"
 
-namespace acst {
+namespace acst::crossing_test {
 namespace {
 
 using integration::Report;
@@ -225,4 +225,4 @@ TEST_F(Crossing, LoadingFromTheSurfaceSkipsTheTrialAndAgreesWithIt) {
 }
 
 }  // namespace
-}  // namespace acst
+}  // namespace acst::crossing_test

@@ -10,6 +10,7 @@
 #include "test_materials.hpp"
 #include "triaxial_run.hpp"
 
+namespace dense_loose_test {
 namespace {
 
 using acst::test::TriaxialPoint;
@@ -97,3 +98,4 @@ TEST(LooseSand, StressRatioRisesMonotonicallyTowardMcWithoutPeak) {
 }
 
 }  // namespace
+}  // namespace dense_loose_test

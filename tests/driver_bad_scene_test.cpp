@@ -12,7 +12,7 @@
 #include "acst_driver/cli.hpp"
 #include "driver_scenes.hpp"
 
-namespace acst::test {
+namespace acst::test::driver_bad_scene_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -168,4 +168,4 @@ TEST(BadScene, CommandLineErrors) {
 }
 
 }  // namespace
-}  // namespace acst::test
+}  // namespace acst::test::driver_bad_scene_test

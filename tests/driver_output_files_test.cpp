@@ -14,7 +14,7 @@
 #include "acst_driver/lab_data.hpp"
 #include "driver_scenes.hpp"
 
-namespace acst::test {
+namespace acst::test::driver_output_files_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -115,4 +115,4 @@ TEST(OutputFiles, FigureIsDrawnWhenGnuplotIsAvailable) {
 }
 
 }  // namespace
-}  // namespace acst::test
+}  // namespace acst::test::driver_output_files_test

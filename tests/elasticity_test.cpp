@@ -7,6 +7,7 @@
 
 #include "test_materials.hpp"
 
+namespace elasticity_test {
 namespace {
 
 using acst::Sym;
@@ -155,3 +156,4 @@ TEST(Elasticity, IsotropicCompressionThenUnloadingReturnsToTheStart) {
 }
 
 }  // namespace
+}  // namespace elasticity_test

@@ -12,7 +12,7 @@
 #include "acst_common/result_folder.hpp"
 #include "scratch.hpp"
 
-namespace acst::test {
+namespace acst::test::fit_result_set_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -98,4 +98,4 @@ TEST(FitResultSet, PublishingSwapsWholeFolders) {
   fs::remove_all(dir);
 }
 
-}  // namespace acst::test
+}  // namespace acst::test::fit_result_set_test

@@ -14,7 +14,7 @@
 #include "strain_path_replay.hpp"
 #include "test_materials.hpp"
 
-namespace acst {
+namespace acst::hard_paths_test {
 namespace {
 
 using integration::PressureFloorPolicy;
@@ -379,4 +379,4 @@ TEST_F(Noisy, LargeNoiseMeetsTolerance) {
 }
 
 }  // namespace
-}  // namespace acst
+}  // namespace acst::hard_paths_test

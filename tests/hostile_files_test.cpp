@@ -19,7 +19,7 @@
 #include "driver_scenes.hpp"
 #include "scratch.hpp"
 
-namespace acst::test {
+namespace acst::test::hostile_files_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -137,4 +137,4 @@ TEST(HostileFiles, MpmTool) {
 }
 
 }  // namespace
-}  // namespace acst::test
+}  // namespace acst::test::hostile_files_test

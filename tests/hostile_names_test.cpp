@@ -20,7 +20,7 @@
 #include "driver_scenes.hpp"
 #include "scratch.hpp"
 
-namespace acst::test {
+namespace acst::test::hostile_names_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -186,4 +186,4 @@ TEST(HostileNames, MpmLabLabelReachesTheFigureQuotedAndRunsNothing) {
 }
 
 }  // namespace
-}  // namespace acst::test
+}  // namespace acst::test::hostile_names_test

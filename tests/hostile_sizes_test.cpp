@@ -21,7 +21,7 @@
 #include "driver_scenes.hpp"
 #include "scratch.hpp"
 
-namespace acst::test {
+namespace acst::test::hostile_sizes_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -172,4 +172,4 @@ TEST(HostileSizes, FailedRunAfterManyRowsLeavesTheGoodCsvWhole) {
 }
 
 }  // namespace
-}  // namespace acst::test
+}  // namespace acst::test::hostile_sizes_test

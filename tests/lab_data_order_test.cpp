@@ -15,7 +15,7 @@
 #include "acst_driver/lab_data.hpp"
 #include "scratch.hpp"
 
-namespace acst::test {
+namespace acst::test::lab_data_order_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -77,4 +77,4 @@ TEST(LabDataOrder, TheFitToolRefusesAnUnsortedSeries) {
 }
 
 }  // namespace
-}  // namespace acst::test
+}  // namespace acst::test::lab_data_order_test

@@ -9,6 +9,7 @@
 
 #include "acst/yield_function.hpp"
 
+namespace loading_direction_test {
 namespace {
 
 using acst::Sym;
@@ -183,3 +184,4 @@ TEST(YieldValue, EqualsTheDefinitionForRandomStresses) {
 }
 
 }  // namespace
+}  // namespace loading_direction_test

@@ -18,6 +18,7 @@ using mpm_test::prandtl_q;
 using mpm_test::run;
 using mpm_test::tresca;
 
+namespace mpm_footing_test {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
@@ -218,3 +219,4 @@ TEST(FootingContact, EachParticleLeavesThroughTheFaceItPenetratesLeast) {
   EXPECT_LT(flat_above.fy, 0.0);
   EXPECT_EQ(flat_above.fx, 0.0);
 }
+}  // namespace mpm_footing_test

@@ -18,6 +18,8 @@
 #include "mpm_scenes.hpp"
 #include "scratch.hpp"
 
+namespace mpm_particle_history_test {
+
 namespace fs = std::filesystem;
 using namespace acst::mpm;
 
@@ -232,3 +234,5 @@ TEST(ParticleHistory, ScenesNameTheirParticlesPlainlyAndInTheSoil) {
     EXPECT_NE(std::string(e.what()).find("/output/particle_histories/0/at: no particle within a cell"), std::string::npos);
   }
 }
+
+}  // namespace mpm_particle_history_test

@@ -8,6 +8,8 @@
 
 #include "mpm_scenes.hpp"
 
+namespace mpm_vibrating_bar_test {
+
 using namespace acst::mpm;
 
 namespace {
@@ -93,3 +95,5 @@ TEST(VibratingBar, OneStressUpdatePerStepKeepsPeriodAndEnergy) {
     EXPECT_NEAR(r.energy_ratio, 1.0, 0.03);
   }
 }
+
+}  // namespace mpm_vibrating_bar_test

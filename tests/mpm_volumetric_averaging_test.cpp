@@ -12,6 +12,8 @@
 #include "footing_runs.hpp"
 #include "mpm_scenes.hpp"
 
+namespace mpm_volumetric_averaging_test {
+
 using namespace acst::mpm;
 
 constexpr double pi = 3.14159265358979323846;
@@ -63,3 +65,5 @@ TEST(VolumetricAveraging, TakesTheLockingOffTrescaSoilAtTwoByTwoParticlesPerCell
   EXPECT_GT(averaged, prandtl) << "q " << averaged << " kPa";
   EXPECT_LT(averaged, 1.12 * prandtl) << "q " << averaged << " kPa, (2 + pi) s_u = " << prandtl;
 }
+
+}  // namespace mpm_volumetric_averaging_test

@@ -11,6 +11,7 @@
 
 #include "test_materials.hpp"
 
+namespace objectivity_test {
 namespace {
 
 using acst::Sym;
@@ -97,3 +98,4 @@ TEST(Objectivity, RotationAboutAxis3IsTheGeneralRotation) {
 }
 
 }  // namespace
+}  // namespace objectivity_test
