@@ -76,13 +76,25 @@ int Material::state_index(const std::string& name) const {
   return -1;
 }
 
+namespace {
+
+// The rotation and the strain increment of a half step from L (plane strain: eps_zz = 0; ABI
+// strain is tension positive with engineering shear).
+void increment_of(const double* L, double dt, double* Q, double* de) {
+  const PlaneRotation r = hughes_winget_rotation(L, dt);
+  const double q[9] = {r.c, r.s, 0.0, -r.s, r.c, 0.0, 0.0, 0.0, 1.0};
+  const double e[6] = {L[0] * dt, L[3] * dt, 0.0, (L[1] + L[2]) * dt, 0.0, 0.0};
+  std::memcpy(Q, q, sizeof q);
+  std::memcpy(de, e, sizeof e);
+}
+
+}  // namespace
+
 acst_status Material::update(double* stress, double* statev, const double* L, double dt, bool& stress_free,
                              std::string* reproducer) const {
   stress_free = false;
-  const PlaneRotation r = hughes_winget_rotation(L, dt);
-  const double Q[9] = {r.c, r.s, 0.0, -r.s, r.c, 0.0, 0.0, 0.0, 1.0};
-  // Plane strain: eps_zz = 0; ABI strain is tension positive with engineering shear.
-  const double de[6] = {L[0] * dt, L[3] * dt, 0.0, (L[1] + L[2]) * dt, 0.0, 0.0};
+  double Q[9], de[6];
+  increment_of(L, dt, Q, de);
   acst_counters counters{};
   // Turned and updated in one call, the common case. A failure leaves the state as it came: the
   // rare retry turns it on its own, updates it again and subdivides the increment (the numbers
@@ -92,9 +104,42 @@ acst_status Material::update(double* stress, double* statev, const double* L, do
     stress_free = reset_to_floor(stress, counters);
     return st;
   }
-  st = acst_rotate_state(stress, statev, model_.get(), Q);
+  return retry(stress, statev, Q, de, stress_free, reproducer);
+}
+
+std::size_t Material::update_batch(std::size_t n, double* stress, double* statev, const double* L, double dt,
+                                   int* stress_free, acst_status& failure, std::string* reproducer) const {
+  double Q[9 * batch_size] = {}, de[6 * batch_size] = {};
+  int codes[batch_size];
+  acst_counters counters[batch_size];
+  for (std::size_t k = 0; k < n; ++k) increment_of(L + 4 * k, dt, Q + 9 * k, de + 6 * k);
+  const size_t stride = static_cast<size_t>(state_size_);
+  acst_update_rotated_batch(stress, 6, statev, stride, codes, counters, model_.get(), n, Q, de);
+  std::size_t first = n;
+  for (std::size_t k = 0; k < n; ++k) {
+    double* s = stress + 6 * k;
+    double* q = statev + stride * k;
+    if (codes[k] == ACST_OK) {
+      stress_free[k] = reset_to_floor(s, counters[k]);
+      continue;
+    }
+    bool free = false;
+    const bool first_failure = first == n;
+    const acst_status st = retry(s, q, Q + 9 * k, de + 6 * k, free, first_failure ? reproducer : nullptr);
+    stress_free[k] = free;
+    if (st.code != ACST_OK && first_failure) {
+      first = k;
+      failure = st;
+    }
+  }
+  return first;
+}
+
+acst_status Material::retry(double* stress, double* statev, const double* Q, const double* de, bool& stress_free,
+                            std::string* reproducer) const {
+  acst_status st = acst_rotate_state(stress, statev, model_.get(), Q);
   if (st.code != ACST_OK) return st;
-  counters = acst_counters{};
+  acst_counters counters{};
   st = acst_update(stress, statev, nullptr, &counters, model_.get(), de);
   for (int parts = 2; st.code == ACST_STEP_REDUCTION && parts <= 64; parts *= 2) {
     double part[6];

@@ -229,26 +229,48 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
         L = w.velocity_gradient(p, vx, vy);
       return L;
     };
-    parallel_for(T, P.n, [&](int t, std::size_t p) {
-      const std::array<double, 4> L = gradient(p);
-      double* F = &P.F[4 * p];
-      const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
-      F[0] += dt_half * (L[0] * F0 + L[1] * F2);
-      F[1] += dt_half * (L[0] * F1 + L[1] * F3);
-      F[2] += dt_half * (L[2] * F0 + L[3] * F2);
-      F[3] += dt_half * (L[2] * F1 + L[3] * F3);
-      double* e = &P.strain[3 * p];
-      e[0] += L[0] * dt_half;
-      e[1] += L[3] * dt_half;
-      e[2] += 0.5 * (L[1] + L[2]) * dt_half;
-      std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
-      bool free = false;
-      const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p,
-                                                              L.data(), dt_half, free, reproducer);
-      P.stress_free[p] = free;
-      if (st.code != ACST_OK && failed[t] < 0) {
+    // In runs of Material::batch_size particles: one call updates a run of one material (the
+    // library updates points of the common kind together, with the same numbers).
+    constexpr std::size_t run = Material::batch_size;
+    parallel_for(T, (P.n + run - 1) / run, [&](int t, std::size_t r) {
+      const std::size_t first = r * run, n = std::min(P.n, first + run) - first;
+      std::array<double, 4 * run> Ls;
+      bool one_material = true;
+      for (std::size_t p = first; p < first + n; ++p) {
+        const std::array<double, 4> L = gradient(p);
+        std::copy(L.begin(), L.end(), &Ls[4 * (p - first)]);
+        one_material = one_material && P.material[p] == P.material[first];
+        double* F = &P.F[4 * p];
+        const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
+        F[0] += dt_half * (L[0] * F0 + L[1] * F2);
+        F[1] += dt_half * (L[0] * F1 + L[1] * F3);
+        F[2] += dt_half * (L[2] * F0 + L[3] * F2);
+        F[3] += dt_half * (L[2] * F1 + L[3] * F3);
+        double* e = &P.strain[3 * p];
+        e[0] += L[0] * dt_half;
+        e[1] += L[3] * dt_half;
+        e[2] += 0.5 * (L[1] + L[2]) * dt_half;
+      }
+      const auto note_failure = [&](std::size_t p, const acst_status& st) {
         failed[t] = static_cast<long long>(p);
         messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
+      };
+      if (one_material) {
+        std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
+        acst_status failure;
+        const Material& mat = *materials_[P.material[first]];
+        const std::size_t bad = mat.update_batch(n, &P.stress[6 * first], P.statev.data() + P.state_size * first,
+                                                 Ls.data(), dt_half, &P.stress_free[first], failure, reproducer);
+        if (bad < n && failed[t] < 0) note_failure(first + bad, failure);
+        return;
+      }
+      for (std::size_t p = first; p < first + n; ++p) {
+        std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;
+        bool free = false;
+        const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p,
+                                                                &Ls[4 * (p - first)], dt_half, free, reproducer);
+        P.stress_free[p] = free;
+        if (st.code != ACST_OK && failed[t] < 0) note_failure(p, st);
       }
     });
     for (int t = 0; t < T; ++t)

@@ -155,6 +155,18 @@ acst_status acst_rotate_state(double* stress, double* statev, const acst_model* 
 acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
                                 const acst_model* model, const double* rotation, const double* dstrain);
 
+/* acst_update_rotated over n points: point i's stress, statev, rotation (9 doubles, row-major)
+ * and dstrain at stress + i stress_stride, statev + i statev_stride, rotation + 9 i and
+ * dstrain + 6 i. Every point's numbers are acst_update_rotated's on it, to the last bit: the sand
+ * kinds update several points at once in SIMD registers where a point's update is the common
+ * one (loaded on the yield surface, one substep; docs/c-abi.md). point_status (n ints, optional)
+ * receives each point's code, point_counters (n structs, optional) each point's counters. The
+ * returned status is the first failure, its message naming the point; a failed point is left as
+ * it came, unrotated, and the others are updated. */
+acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                                      int* point_status, acst_counters* point_counters, const acst_model* model,
+                                      size_t n, const double* rotation, const double* dstrain);
+
 /* Reproducers: the element-test scene (JSON text, docs/element-tests.md) that replays one
  * update with `acst_element FILE`: the material written out in full, the whole state, the
  * strain increment as six strain-controlled rows of one increment. Write it for an update that

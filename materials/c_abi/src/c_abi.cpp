@@ -245,6 +245,70 @@ acst_status acst_update_rotated(double* stress, double* statev, double* tangent,
   })
 }
 
+acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                                      int* point_status, acst_counters* point_counters, const acst_model* model,
+                                      size_t n, const double* rotation, const double* dstrain) {
+  ACST_REQUIRE(model, "acst_update_rotated_batch: a required pointer is NULL");
+  const size_t nstatv = static_cast<size_t>(state_size_of(*model));
+  ACST_REQUIRE(n == 0 || (stress && rotation && dstrain && (statev || nstatv == 0)),
+               "acst_update_rotated_batch: a required pointer is NULL");
+  ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv),
+               "acst_update_rotated_batch: strides must be at least 6 (stress) and acst_state_size (state)");
+  ACST_GUARD({
+    // In blocks: each point turned into copies as acst_update_rotated turns it, the block's
+    // copies updated together, the good ones copied back.
+    constexpr int block = 16;
+    acst_status first = ok_status();
+    size_t first_point = n;
+    const auto note_failure = [&](size_t i, int code, const char* message, double factor) {
+      if (i >= first_point) return;
+      first_point = i;
+      first = make_status(code, "point " + std::to_string(i) + ": " + message, factor);
+    };
+    for (size_t start = 0; start < n; start += block) {
+      const int m = static_cast<int>(std::min<size_t>(block, n - start));
+      double s[block][6], q[block][ACST_NSTATV];
+      double *s_ptr[block], *q_ptr[block];
+      const double* e_ptr[block];
+      int index[block], codes[block];
+      acst::integration::Report reports[block];
+      int used = 0;
+      for (int k = 0; k < m; ++k) {
+        const size_t i = start + static_cast<size_t>(k);
+        const Eigen::Matrix3d Q = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rotation + 9 * i);
+        if (!proper_rotation(Q)) {
+          if (point_status) point_status[i] = ACST_INVALID_INPUT;
+          if (point_counters) point_counters[i] = acst_counters{};
+          note_failure(i, ACST_INVALID_INPUT, "acst_update_rotated_batch: " ACST_ROTATION_RULE, 1.0);
+          continue;
+        }
+        rotated_copy(*model, stress + i * stress_stride, statev ? statev + i * statev_stride : nullptr, Q, s[used],
+                     q[used]);
+        s_ptr[used] = s[used];
+        q_ptr[used] = q[used];
+        e_ptr[used] = dstrain + 6 * i;
+        index[used++] = k;
+      }
+      acst_status failure = ok_status();
+      model->kind->update_points(used, s_ptr, q_ptr, e_ptr, codes, reports, failure);
+      bool failure_named = false;  // `failure` is the block's first failed point's status
+      for (int u = 0; u < used; ++u) {
+        const size_t i = start + static_cast<size_t>(index[u]);
+        if (point_status) point_status[i] = codes[u];
+        if (point_counters) copy_counters(reports[u], &point_counters[i]);
+        if (codes[u] == ACST_OK) {
+          std::copy(s[u], s[u] + 6, stress + i * stress_stride);
+          if (nstatv) std::copy(q[u], q[u] + nstatv, statev + i * statev_stride);
+        } else if (!failure_named) {
+          failure_named = true;
+          note_failure(i, failure.code, failure.message, failure.suggested_step_factor);
+        }
+      }
+    }
+    return first;
+  })
+}
+
 acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* model, const double* stress,
                             const double* statev, const double* dstrain) {
   ACST_REQUIRE(length && model && stress && dstrain && (statev || state_size_of(*model) == 0),

@@ -50,13 +50,17 @@ acst_status status_from_report(const integration::Report& r) {
   return make_status(ACST_INTERNAL_ERROR, "unknown integrator status", 1.0);
 }
 
-acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
-                         integration::Report& rep) {
-  // The state variables before any is converted (the reset count to an integer, where a NaN would
-  // be undefined behaviour); the substep hint alone may be anything (no number: no hint).
+// Before any is converted (the reset count to an integer, where a NaN would be undefined
+// behaviour); the substep hint alone may be anything (no number: no hint).
+bool state_variables_finite(const double* statev) {
   bool finite = true;
   for (int i = 0; i < state_size; ++i) finite = finite && (i == slot_substep_hint || std::isfinite(statev[i]));
-  if (!finite) {
+  return finite;
+}
+
+acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
+                         integration::Report& rep) {
+  if (!state_variables_finite(statev)) {
     rep = integration::Report{};
     rep.status = integration::Status::nonphysical_state;
     return status_from_report(rep);

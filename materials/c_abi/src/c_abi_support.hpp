@@ -14,6 +14,9 @@ acst_status ok_status();  // no formatting: it is on the hot path
 acst_status status_from_report(const integration::Report& r);
 void copy_counters(const integration::Report& r, acst_counters* out);
 
+// Whether a sand point's state variables may be converted (all finite but the substep hint).
+bool state_variables_finite(const double* statev);
+
 // Converts, updates one sand point, converts back; stress and statev untouched on failure.
 acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
                          integration::Report& rep);

@@ -9,6 +9,7 @@
 #include "acst/json_input.hpp"
 #include "acst/material.hpp"
 #include "acst/reproducer.hpp"
+#include "acst/update_lanes.hpp"
 #include "acst/yield_function.hpp"
 #include "c_abi_support.hpp"
 #include "model_kind.hpp"
@@ -59,6 +60,47 @@ class SandKind final : public ModelKind {
   acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
                      integration::Report& rep) const override {
     return update_point(stress, statev, tangent, material_, dstrain, rep);
+  }
+
+  // Up to UpdateLanes::width points at a time in SIMD lanes (acst/update_lanes.hpp); the points
+  // the lanes leave, and those update_point would refuse before converting, go through
+  // update_point. The lanes' numbers are update_point's, so every point's are.
+  void update_points(int m, double* const* stress, double* const* statev, const double* const* dstrain, int* codes,
+                     integration::Report* reports, acst_status& failure) const override {
+    if (!lanes_apply(material_)) return ModelKind::update_points(m, stress, statev, dstrain, codes, reports, failure);
+    constexpr int W = UpdateLanes::width;
+    for (int first = 0; first < m; first += W) {
+      UpdateLanes lanes;
+      int point[W] = {};
+      State states[W];
+      for (int k = first; k < m && k < first + W; ++k) {
+        codes[k] = -1;  // not yet updated
+        if (!state_variables_finite(statev[k])) continue;
+        const int l = lanes.n++;
+        point[l] = k;
+        State& s = states[l];
+        s.stress = stress_to_model(stress[k]);
+        fill_state(s, statev[k]);
+        put_lane(lanes, l, s, strain_to_model(dstrain[k]));
+      }
+      update_lanes(material_, lanes);
+      for (int l = 0; l < lanes.n; ++l) {
+        if (!lanes.done[l]) continue;
+        const int k = point[l];
+        State& s = states[l];
+        take_lane(lanes, l, s);
+        stress_from_model(s.stress, stress[k]);
+        store_state(s, statev[k]);
+        reports[k] = lane_report(lanes, l);
+        codes[k] = ACST_OK;
+      }
+      for (int k = first; k < m && k < first + W; ++k) {
+        if (codes[k] != -1) continue;
+        const acst_status st = update(stress[k], statev[k], nullptr, dstrain[k], reports[k]);
+        codes[k] = st.code;
+        if (st.code != ACST_OK && failure.code == ACST_OK) failure = st;
+      }
+    }
   }
 
   ElasticModuli moduli(const double* stress, const double* statev) const override {

@@ -39,6 +39,15 @@ std::string ModelKind::state_problem(const double* stress, const double* statev)
 
 bool ModelKind::diagnostic_applies(int) const { return true; }
 
+void ModelKind::update_points(int m, double* const* stress, double* const* statev, const double* const* dstrain,
+                              int* codes, integration::Report* reports, acst_status& failure) const {
+  for (int k = 0; k < m; ++k) {
+    const acst_status st = update(stress[k], statev[k], nullptr, dstrain[k], reports[k]);
+    codes[k] = st.code;
+    if (st.code != ACST_OK && failure.code == ACST_OK) failure = st;
+  }
+}
+
 acst_status ModelKind::void_ratio_from_relative_density(double*, double) const {
   return make_status(ACST_INVALID_INPUT, "acst_void_ratio_from_relative_density: only for sand models (ACST, isotropic)",
                      1.0);

@@ -4,6 +4,7 @@
 // increment and an incremental rotation, and turns stress and fabric objectively (Hughes-Winget)
 // and updates them in one call, acst_update_rotated. The MPM core stores stress in the ABI's
 // convention (tension positive, Voigt xx yy zz xy xz yz, kPa): no conversion happens here.
+#include <cstddef>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -66,7 +67,21 @@ class Material {
   acst_status update(double* stress, double* statev, const double* L, double dt, bool& stress_free,
                      std::string* reproducer = nullptr) const;
 
+  // update() of n <= batch_size particles at once, their stress, state and L 6, state_size and 4
+  // doubles apart: one acst_update_rotated_batch call (the library updates points of the common
+  // kind together in SIMD registers, with the same numbers), then update()'s retries for the
+  // particles it failed. The same numbers as n calls of update(). stress_free: n flags. Returns
+  // the first failing particle's index (n if none), its status in `failure` and, where asked,
+  // its reproducer.
+  static constexpr std::size_t batch_size = 16;
+  std::size_t update_batch(std::size_t n, double* stress, double* statev, const double* L, double dt, int* stress_free,
+                           acst_status& failure, std::string* reproducer = nullptr) const;
+
  private:
+  // What update() does after acst_update_rotated failed: turn, update, subdivide.
+  acst_status retry(double* stress, double* statev, const double* Q, const double* de, bool& stress_free,
+                    std::string* reproducer) const;
+
   std::string name_;
   std::unique_ptr<acst_model, void (*)(acst_model*)> model_;
   int state_size_ = 0;

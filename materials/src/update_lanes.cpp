@@ -1,0 +1,97 @@
+#include "acst/update_lanes.hpp"
+
+#include "update_lanes_kernel.hpp"
+
+namespace acst {
+
+#if !defined(ACST_LANES_OFF)
+namespace {
+
+lanes::Constants constants_of(const Material& material) {
+  const Parameters& p = material.parameters();
+  const integration::Options& o = material.options();
+  return {lode_shape(p).form == LodeForm::willam_warnke,
+          p.c, p.R_tolerance, p.p_min, p.G0, p.nu, p.e_Gamma, p.lambda_c, p.xi, p.e_A, p.d1, p.m, p.Mc, p.h1, p.h2,
+          p.h_min, p.n, p.peak_pressure_exponent, p.k_f,
+          o.ftol, o.ltol, o.stol,
+          o.reuse_last_substep};
+}
+
+}  // namespace
+#endif
+
+void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_increment) {
+  for (int i = 0; i < 6; ++i) {
+    lanes.stress[i][l] = state.stress[i];
+    lanes.fabric[i][l] = state.fabric[i];
+    lanes.strain_increment[i][l] = strain_increment[i];
+  }
+  lanes.void_ratio[l] = state.void_ratio;
+  lanes.H[l] = state.H;
+  lanes.substep_hint[l] = state.substep_hint;
+}
+
+void take_lane(const UpdateLanes& lanes, int l, State& state) {
+  for (int i = 0; i < 6; ++i) {
+    state.stress[i] = lanes.stress[i][l];
+    state.fabric[i] = lanes.fabric[i][l];
+  }
+  state.void_ratio = lanes.void_ratio[l];
+  state.H = lanes.H[l];
+  state.substep_hint = lanes.substep_hint[l];
+}
+
+integration::Report lane_report(const UpdateLanes& lanes, int l) {
+  integration::Report rep;
+  if (lanes.plastic[l]) {
+    rep.plastic = true;
+    rep.counters.rate_evaluations = 3;  // the elastic trial's rate and the two stages'
+    rep.counters.substeps_accepted = 1;
+    rep.counters.guard_lode_clamp = lanes.guard_lode_clamp[l];
+    rep.counters.guard_h_floor = lanes.guard_h_floor[l];
+  } else {
+    rep.counters.rate_evaluations = 2;  // Heun's two elastic rates
+  }
+  return rep;
+}
+
+bool lanes_apply(const Material& material) {
+#if defined(ACST_LANES_OFF)
+  (void)material;
+  return false;
+#else
+  return material.options().scheme == integration::Scheme::modified_euler &&
+         material.parameters().elastic_anisotropy == 0.0 && material.options().max_substeps >= 1;
+#endif
+}
+
+void update_lanes(const Material& material, UpdateLanes& lanes, LaneBuild build) {
+  const int n = lanes.n;
+  for (int l = 0; l < UpdateLanes::width; ++l) lanes.done[l] = 0;
+  if (n <= 0 || n > UpdateLanes::width || !lanes_apply(material)) return;
+  // The unused lanes repeat lane 0, so that they compute on numbers (and are never done).
+  for (int l = n; l < UpdateLanes::width; ++l) {
+    for (int i = 0; i < 6; ++i) {
+      lanes.stress[i][l] = lanes.stress[i][0];
+      lanes.fabric[i][l] = lanes.fabric[i][0];
+      lanes.strain_increment[i][l] = lanes.strain_increment[i][0];
+    }
+    lanes.void_ratio[l] = lanes.void_ratio[0];
+    lanes.H[l] = lanes.H[0];
+    lanes.substep_hint[l] = lanes.substep_hint[0];
+  }
+#if !defined(ACST_LANES_OFF)
+  const lanes::Constants k = constants_of(material);
+#if defined(ACST_LANES_X86_64_V3)
+  // The x86-64-v3 copy (AVX2 and FMA, built without contraction: the same numbers) where the CPU
+  // has it: a vector holds four lanes there, two in the generic copy.
+  if (build == LaneBuild::best && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+    return lanes::x86_64_v3::update(k, lanes);
+#endif
+  lanes::generic::update(k, lanes);
+#else
+  (void)build;
+#endif
+}
+
+}  // namespace acst
