@@ -30,7 +30,7 @@ constexpr int W = UpdateLanes::width;
 ACST_LANE double min_of(double a, double b) { return b < a ? b : a; }
 ACST_LANE double max_of(double a, double b) { return a < b ? b : a; }
 ACST_LANE double clamp_of(double v, double lo, double hi) { return v < lo ? lo : (hi < v ? hi : v); }
-ACST_LANE bool finite(double x) { return std::abs(x) <= std::numeric_limits<double>::max(); }
+ACST_LANE int finite(double x) { return std::abs(x) <= std::numeric_limits<double>::max(); }
 
 // tensor.hpp
 ACST_LANE double trace(const double* a) { return a[0] + a[1] + a[2]; }
@@ -302,7 +302,7 @@ ACST_LANE void rate_after_pow(const Constants& k, const double* y, const double*
 }
 
 // acst_rates.hpp admissibility (none) and Material::update's physical(), on y.
-ACST_LANE bool admissible(const Constants& k, const double* y) {
+ACST_LANE int admissible(const Constants& k, const double* y) {
   bool all = true;
   #pragma GCC unroll 13
   for (int i = 0; i < 13; ++i) all = all & finite(y[i]);
@@ -389,7 +389,7 @@ void run(const Constants& k, UpdateLanes& L) {
     #pragma GCC unroll 13
     for (int i = 0; i < 6; ++i) L.fabric[i][l] = elastic_lane ? y_el[6 + i] : L.fabric[i][l];
     L.void_ratio[l] = elastic_lane ? y_el[12] : L.void_ratio[l];
-    L.substep_hint[l] = elastic_lane & !hint_usable ? 1.0 : hint;
+    L.substep_hint[l] = (elastic_lane & !hint_usable) ? 1.0 : hint;
   }
   transcendental(k, L.void_ratio, start);
   double ys_e[W];

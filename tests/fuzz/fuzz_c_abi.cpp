@@ -2,8 +2,9 @@
 // From the fuzzer's bytes: a model (a bundled parameter set of data/parameters, or a linear
 // elastic or von Mises material with moduli over many decades), a state (from acst_initial_state
 // or raw doubles) and a sequence of calls: acst_update with increments from 1e-12 to 10 (or any
-// double), acst_rotate_state, acst_update_rotated, acst_diagnostics, acst_wave_speed. Checked
-// after every call:
+// double), acst_rotate_state, acst_update_rotated (and acst_update_rotated_batch on the same
+// point, which must give the same bits), acst_diagnostics, acst_wave_speed. Checked after every
+// call:
 //   - on any status but ACST_OK the stress and state passed in are unchanged (always);
 //   - ACST_OK means every output is finite and physical: stress, state, tangent, diagnostics and
 //     wave speed finite, and for the sand models void ratio > 0 and p >= 0 (with the CMake
@@ -172,6 +173,12 @@ void update_rotated(acst::fuzz::Bytes& in, const acst_model* m, Point& p, bool s
   arguments = numbers("stress", p.stress, 6) + numbers("statev", p.statev, acst_state_size(m)) + numbers("Q", Q, 9) +
               numbers("dstrain", d, 6);
   const acst_status s = acst_update_rotated(p.stress, p.statev, tangent, &counters, m, Q, d);
+  // The batch form must give the same point, bit for bit (it may take SIMD lanes).
+  Point batch = before;
+  int code = -1;
+  acst_update_rotated_batch(batch.stress, 6, batch.statev, ACST_NSTATV, &code, nullptr, m, 1, Q, d);
+  if (code != s.code || std::memcmp(&batch, &p, sizeof batch) != 0)
+    finding("acst_update_rotated_batch", "differs from acst_update_rotated", s);
   if (s.code != ACST_OK) return check_unchanged("acst_update_rotated", s, before, p);
   check_ok_point("acst_update_rotated", s, p, acst_state_size(m), sand);
   if (ok_rule && !all_finite(tangent, 36)) finding("acst_update_rotated", "OK with a non-finite tangent", s);
