@@ -1,6 +1,6 @@
 // Time per stress update of the explicit integrators (FE-1, ME, RK23, RK45 at STOL 1e-4) and of
 // the C ABI (acst_update, ME; and, spun as an MPM host spins it, acst_rotate_state + acst_update
-// against acst_update_rotated), guide set, single thread.
+// against acst_update_rotated and acst_update_rotated_batch), guide set, single thread.
 //   elastic: 1000 small unloading increments (1e-6 axial, reversed drained direction) from a
 //            state inside the cone (dense sand, 2 % axial strain, then unloaded by 5e-4);
 //   plastic: drained triaxial compression from 100 kPa, 1000 increments of 1e-4 axial strain
@@ -71,7 +71,10 @@ Timing time_sequence(const Material& m, const Sequence& seq) {
 // The same sequence through the C ABI (tension positive, engineering shear): acst_update alone,
 // or as an MPM host calls it, each increment after a small spin about z (acst_rotate_state and
 // acst_update, or both in one acst_update_rotated).
-enum class AbiCall { update, rotate_then_update, update_rotated };
+// acst_update_rotated_batch takes 8 copies of the point in lock step (the library's SIMD lanes
+// take what is theirs: docs/c-abi.md, "Many points at once"); its figure is per point and update.
+enum class AbiCall { update, rotate_then_update, update_rotated, update_rotated_batch };
+constexpr int kBatchCopies = 8;
 
 struct AbiTiming {
   double ns_per_update = 0.0;
@@ -103,15 +106,24 @@ AbiTiming time_abi(const acst_model* model, const Material& m, const Sequence& s
   for (size_t k = 0; k < seq.increments.size(); ++k)
     for (int i = 0; i < 6; ++i) dstrain[k][i] = -seq.increments[k][i] * (i < 3 ? 1.0 : 2.0);
   std::vector<double> times;
-  double stress[6], statev[ACST_NSTATV], tangent[36];
+  double stress[6 * kBatchCopies], statev[ACST_NSTATV * kBatchCopies], tangent[36];
+  double spins[9 * kBatchCopies];
+  std::vector<std::array<double, 6 * kBatchCopies>> dstrains(dstrain.size());
+  const int copies = call == AbiCall::update_rotated_batch ? kBatchCopies : 1;
   double* const D = with_tangent ? tangent : nullptr;
   const double a = 1e-4;  // radians per increment, an MPM particle's spin under a footing
   const double spin[9] = {std::cos(a), -std::sin(a), 0.0, std::sin(a), std::cos(a), 0.0, 0.0, 0.0, 1.0};
+  for (int c = 0; c < kBatchCopies; ++c) std::copy(spin, spin + 9, spins + 9 * c);
+  for (size_t k = 0; k < dstrain.size(); ++k)
+    for (int c = 0; c < kBatchCopies; ++c) std::copy(dstrain[k].begin(), dstrain[k].end(), dstrains[k].begin() + 6 * c);
   for (int rep = 0; rep < kRepetitions; ++rep) {
-    std::copy(stress0, stress0 + 6, stress);
-    std::copy(statev0, statev0 + ACST_NSTATV, statev);
+    for (int c = 0; c < copies; ++c) {
+      std::copy(stress0, stress0 + 6, stress + 6 * c);
+      std::copy(statev0, statev0 + ACST_NSTATV, statev + ACST_NSTATV * c);
+    }
     const double t0 = bench::now_seconds();
-    for (const auto& d : dstrain) {
+    for (size_t k = 0; k < dstrain.size(); ++k) {
+      const auto& d = dstrain[k];
       switch (call) {
         case AbiCall::update: st = acst_update(stress, statev, D, nullptr, model, d.data()); break;
         case AbiCall::rotate_then_update:
@@ -119,12 +131,16 @@ AbiTiming time_abi(const acst_model* model, const Material& m, const Sequence& s
           if (st.code == ACST_OK) st = acst_update(stress, statev, D, nullptr, model, d.data());
           break;
         case AbiCall::update_rotated: st = acst_update_rotated(stress, statev, D, nullptr, model, spin, d.data()); break;
+        case AbiCall::update_rotated_batch:
+          st = acst_update_rotated_batch(stress, 6, statev, ACST_NSTATV, nullptr, nullptr, model, kBatchCopies, spins,
+                                         dstrains[k].data());
+          break;
       }
       t.ok &= st.code == ACST_OK;
     }
     times.push_back(bench::now_seconds() - t0);
   }
-  t.ns_per_update = bench::median(times) / dstrain.size() * 1e9;
+  t.ns_per_update = bench::median(times) / (dstrain.size() * copies) * 1e9;
   std::copy(stress, stress + 6, t.end_stress.begin());
   State s = seq.start;
   for (const Sym& deps : seq.increments) m.update(s, deps);
@@ -194,11 +210,12 @@ int main(int argc, char** argv) {
     const AbiTiming abi_loose = time_abi(model, me, plastic[1].second, false);
     const AbiTiming abi_dense_t = time_abi(model, me, plastic[0].second, true);
     const AbiTiming abi_el_t = time_abi(model, me, elastic, true);
-    std::array<AbiTiming, 3> two_calls, one_call;  // elastic, dense, loose
+    std::array<AbiTiming, 3> two_calls, one_call, batch;  // elastic, dense, loose
     const Sequence* sequences[3] = {&elastic, &plastic[0].second, &plastic[1].second};
     for (int k = 0; k < 3; ++k) {
       two_calls[k] = time_abi(model, me, *sequences[k], false, AbiCall::rotate_then_update);
       one_call[k] = time_abi(model, me, *sequences[k], false, AbiCall::update_rotated);
+      batch[k] = time_abi(model, me, *sequences[k], false, AbiCall::update_rotated_batch);
     }
     acst_model_destroy(model);
 
@@ -239,22 +256,28 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 6; ++k) csv.blank();  // no loose figure, no counts
     csv.cell(abi_ok ? "ok" : "failed").end_row();
     bool same_numbers = true;
-    for (const auto* calls : {&two_calls, &one_call}) {
+    for (const auto* calls : {&two_calls, &one_call, &batch}) {
       const bool rotated_ok = (*calls)[0].ok && (*calls)[1].ok && (*calls)[2].ok;
-      const bool one = calls == &one_call;
-      std::printf("| C ABI %s, ME, spun 1e-4 rad per update | %.0f | %.0f | %.0f | (as ME) | (as ME) |%s\n",
-                  one ? "acst_update_rotated" : "acst_rotate_state + acst_update", (*calls)[0].ns_per_update,
-                  (*calls)[1].ns_per_update, (*calls)[2].ns_per_update, rotated_ok ? "" : " FAILED CALLS");
-      csv.cell(one ? "C_ABI_ME_update_rotated" : "C_ABI_ME_rotate_then_update").cell(tenth((*calls)[0].ns_per_update));
+      const char* name = calls == &one_call ? "acst_update_rotated"
+                         : calls == &batch  ? "acst_update_rotated_batch (8 points)"
+                                            : "acst_rotate_state + acst_update";
+      const char* column = calls == &one_call ? "C_ABI_ME_update_rotated"
+                           : calls == &batch  ? "C_ABI_ME_update_rotated_batch"
+                                              : "C_ABI_ME_rotate_then_update";
+      std::printf("| C ABI %s, ME, spun 1e-4 rad per update | %.0f | %.0f | %.0f | (as ME) | (as ME) |%s\n", name,
+                  (*calls)[0].ns_per_update, (*calls)[1].ns_per_update, (*calls)[2].ns_per_update,
+                  rotated_ok ? "" : " FAILED CALLS");
+      csv.cell(column).cell(tenth((*calls)[0].ns_per_update));
       csv.cell(tenth((*calls)[1].ns_per_update)).cell(tenth((*calls)[2].ns_per_update));
       for (int k = 0; k < 5; ++k) csv.blank();  // no substep or evaluation counts
       csv.cell(rotated_ok ? "ok" : "failed").end_row();
     }
-    for (int k = 0; k < 3; ++k) same_numbers &= one_call[k].end_stress == two_calls[k].end_stress;
+    for (int k = 0; k < 3; ++k)
+      same_numbers &= one_call[k].end_stress == two_calls[k].end_stress && batch[k].end_stress == one_call[k].end_stress;
     csv.publish(out + "/stress_update.csv");
     std::printf("\nC ABI end stress vs C++ end stress (relative): elastic %.1e, dense %.1e, loose %.1e\n",
                 abi_el.max_difference, abi_dense.max_difference, abi_loose.max_difference);
-    std::printf("Spun sequences, acst_update_rotated against acst_rotate_state + acst_update: %s\n",
+    std::printf("Spun sequences, acst_update_rotated against acst_rotate_state + acst_update and against the batch: %s\n",
                 same_numbers ? "the same end stress bit for bit" : "END STRESSES DIFFER");
     const Row& me_row = rows[1];
     std::printf("Targets (ME, STOL 1e-4): plastic <= 2000 ns: dense %s (%.0f), loose %s (%.0f); elastic <= 200 ns: %s "

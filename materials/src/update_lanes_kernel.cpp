@@ -248,8 +248,14 @@ ACST_LANE void quantities_before_pow(const Constants& k, const double* y, const 
 
 // The calls to pow and exp, one per lane, as critical_state.hpp, dilatancy.hpp and
 // plastic_modulus.hpp make them.
-void transcendental(const Constants& k, const double (&e)[W], Stage& st) {
+// Lanes off the plastic route (`active` 0) skip the calls: a fifth of a footing's updates are
+// elastic.
+void transcendental(const Constants& k, const double (&e)[W], const int (&active)[W], Stage& st) {
   for (int l = 0; l < W; ++l) {
+    if (!active[l]) {
+      st.exp_m_zeta[l] = st.exp_n_zeta[l] = 0.0;
+      continue;
+    }
     const double psi = e[l] - (k.e_Gamma - k.lambda_c * std::pow(st.pressure_ratio[l], k.xi));
     const double zeta = psi - k.e_A * (st.A[l] - 1.0);
     const double n = k.beta == 0.0 ? k.n : k.n * std::pow(st.peak_pressure_ratio[l], k.beta);
@@ -391,7 +397,16 @@ void run(const Constants& k, UpdateLanes& L) {
     L.void_ratio[l] = elastic_lane ? y_el[12] : L.void_ratio[l];
     L.substep_hint[l] = (elastic_lane & !hint_usable) ? 1.0 : hint;
   }
-  transcendental(k, L.void_ratio, start);
+  int plastic_lanes = 0;
+  for (int l = 0; l < W; ++l) plastic_lanes += ok[l];
+  if (plastic_lanes == 0) {  // elastic lanes only (or none): the rest is the plastic route's
+    for (int l = 0; l < W; ++l) {
+      L.done[l] = elastic_done[l];
+      L.plastic[l] = L.guard_lode_clamp[l] = L.guard_h_floor[l] = 0;
+    }
+    return;
+  }
+  transcendental(k, L.void_ratio, ok, start);
   double ys_e[W];
   // The first rate; the second stage's state y + k0 and its rate up to the pow.
   for (int l = 0; l < W; ++l) {
@@ -411,7 +426,7 @@ void run(const Constants& k, UpdateLanes& L) {
     ys_e[l] = ys.v[12];
     ok[l] = ok[l] & !unusable;
   }
-  transcendental(k, ys_e, end);
+  transcendental(k, ys_e, ok, end);
   // The second rate, the step and its error, the checks and the drift-free H.
   for (int l = 0; l < W; ++l) {
     const Vec y = load(L.stress, L.fabric, L.void_ratio, l);
