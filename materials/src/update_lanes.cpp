@@ -82,12 +82,10 @@ void update_lanes(const Material& material, UpdateLanes& lanes, LaneBuild build)
   }
 #if !defined(ACST_LANES_OFF)
   const lanes::Constants k = constants_of(material);
-#if defined(ACST_LANES_X86_64_V3)
   // The x86-64-v3 copy (AVX2 and FMA, built without contraction: the same numbers) where the CPU
   // has it: a vector holds four lanes there, two in the generic copy.
   if (build == LaneBuild::best && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
     return lanes::x86_64_v3::update(k, lanes);
-#endif
   lanes::generic::update(k, lanes);
 #else
   (void)build;

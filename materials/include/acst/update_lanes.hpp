@@ -41,7 +41,8 @@ void take_lane(const UpdateLanes& lanes, int l, State& state);
 integration::Report lane_report(const UpdateLanes& lanes, int l);
 
 // Whether update_lanes can do anything for this material (ME without tangent, isotropic
-// elasticity); where not, every lane comes back not done.
+// elasticity) in this build (x86-64 without ACST_NATIVE: materials/CMakeLists.txt); where not,
+// every lane comes back not done.
 bool lanes_apply(const Material& material);
 
 // The kernel's builds: the best the CPU runs (AVX2 and FMA where it has them, on x86-64), or
