@@ -52,14 +52,23 @@ Points start(const acst_model* m, int n, std::mt19937_64& rng) {
   return P;
 }
 
-// A step's rotations (about axis 3) and plane-strain increments (engineering shear), mostly
-// compressing the points vertically.
+// A step's rotations (about axis 3, as a plane-strain host's; every fifth point's about a tilted
+// axis, the general turn) and plane-strain increments (engineering shear), mostly compressing
+// the points vertically.
 void step(Points& P, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int i = 0; i < P.n; ++i) {
     const double a = 1e-5 * u(rng), c = std::cos(a), s = std::sin(a);
-    const double Q[9] = {c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0};
-    std::memcpy(&P.rotation[9 * i], Q, sizeof Q);
+    if (i % 5 == 2) {  // Rodrigues' formula about the unit axis k
+      const double k[3] = {0.48, 0.6, 0.64}, t = 1.0 - c;
+      const double Q[9] = {c + t * k[0] * k[0],        t * k[0] * k[1] - s * k[2], t * k[0] * k[2] + s * k[1],
+                           t * k[1] * k[0] + s * k[2], c + t * k[1] * k[1],        t * k[1] * k[2] - s * k[0],
+                           t * k[2] * k[0] - s * k[1], t * k[2] * k[1] + s * k[0], c + t * k[2] * k[2]};
+      std::memcpy(&P.rotation[9 * i], Q, sizeof Q);
+    } else {
+      const double Q[9] = {c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0};
+      std::memcpy(&P.rotation[9 * i], Q, sizeof Q);
+    }
     const double size = std::pow(10.0, -6.5 + 2.0 * (0.5 * (u(rng) + 1.0)));
     const double e[6] = {size * (0.4 + 0.5 * u(rng)), -size * (1.0 + 0.5 * u(rng)), 0.0, size * u(rng), 0.0, 0.0};
     std::memcpy(&P.dstrain[6 * i], e, sizeof e);
@@ -75,11 +84,14 @@ TEST(UpdateRotatedBatch, EveryPointIsUpdateRotatedToTheBit) {
   for (int round = 0; round < 60; ++round) {
     step(P, rng);
     Points bad = P;
-    // Points the update refuses or fails: not a rotation, a NaN state, a tensile blow-up.
+    // Points the update refuses or fails: not a rotation, a NaN state, a tensile blow-up. And a
+    // floor-reset count that is not a whole number (every update writes back what it read).
     if (round % 3 == 0) {
       bad.rotation[9 * 5] = 2.0;
       bad.statev[ACST_NSTATV * 11 + 6] = std::numeric_limits<double>::quiet_NaN();
       bad.dstrain[6 * 20 + 1] = 0.5;
+    } else if (round % 3 == 1) {
+      bad.statev[ACST_NSTATV * 9 + 9] = 2.5;
     }
     Points one = bad, batch = bad;
     std::vector<int> codes(n);

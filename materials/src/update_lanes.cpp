@@ -41,20 +41,6 @@ void take_lane(const UpdateLanes& lanes, int l, State& state) {
   state.substep_hint = lanes.substep_hint[l];
 }
 
-integration::Report lane_report(const UpdateLanes& lanes, int l) {
-  integration::Report rep;
-  if (lanes.plastic[l]) {
-    rep.plastic = true;
-    rep.counters.rate_evaluations = 3;  // the elastic trial's rate and the two stages'
-    rep.counters.substeps_accepted = 1;
-    rep.counters.guard_lode_clamp = lanes.guard_lode_clamp[l];
-    rep.counters.guard_h_floor = lanes.guard_h_floor[l];
-  } else {
-    rep.counters.rate_evaluations = 2;  // Heun's two elastic rates
-  }
-  return rep;
-}
-
 bool lanes_apply(const Material& material) {
 #if defined(ACST_LANES_OFF)
   (void)material;

@@ -6,16 +6,27 @@
 
 namespace acst::abi {
 
-inline Sym stress_to_model(const double* s) { return -Eigen::Map<const Sym>(s); }
+// Entry i of an array, converted: the whole-tensor conversions below are these, entry by entry
+// (also used alone for points laid out otherwise, as SIMD lanes).
+inline double stress_entry_to_model(const double* s, int i) { return -s[i]; }
+inline double stress_entry_from_model(double s) { return -s; }
+inline double strain_entry_to_model(const double* e, int i) {
+  return i < 3 ? -e[i] : -e[i] * 0.5;  // engineering gamma_ij = 2 eps_ij
+}
+
+inline Sym stress_to_model(const double* s) {
+  Sym m;
+  for (int i = 0; i < 6; ++i) m[i] = stress_entry_to_model(s, i);
+  return m;
+}
 
 inline void stress_from_model(const Sym& s, double* out) {
-  Eigen::Map<Sym> o(out);
-  o = -s;
+  for (int i = 0; i < 6; ++i) out[i] = stress_entry_from_model(s[i]);
 }
 
 inline Sym strain_to_model(const double* e) {
-  Sym m = -Eigen::Map<const Sym>(e);
-  m.tail<3>() *= 0.5;  // engineering gamma_ij = 2 eps_ij
+  Sym m;
+  for (int i = 0; i < 6; ++i) m[i] = strain_entry_to_model(e, i);
   return m;
 }
 

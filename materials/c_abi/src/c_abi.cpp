@@ -1,6 +1,6 @@
 // The C ABI: thin wrappers that never let an exception escape. What differs between model
 // kinds lives behind ModelKind (one file per kind, registered in model_kinds.cpp).
-#include <Eigen/Geometry>  // cross product of the rotation's rows
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -8,12 +8,10 @@
 #include <new>
 #include <string>
 
-#include "abi_convention.hpp"
 #include "acst.h"
 #include "acst/fabric.hpp"
 #include "c_abi_support.hpp"
 #include "model_kind.hpp"
-#include "state_layout.hpp"
 
 struct acst_model {
   std::unique_ptr<const acst::abi::ModelKind> kind;
@@ -27,26 +25,24 @@ int state_size_of(const acst_model& model) { return model.kind->state().size; }
 
 // |Q Q^T - I| < 1e-8 as its square, so no square root on the MPM hosts' hot path; Q Q^T is
 // symmetric, so its six distinct entries are the rows' dot products, and det Q is the rows'
-// triple product (written out: Eigen's general product and determinant took 2.7 % of an MPM
-// step, bench/RESULTS.md 1s).
-bool proper_rotation(const Eigen::Matrix3d& Q) {
-  if (!Q.allFinite()) return false;
-  const Eigen::Vector3d a = Q.row(0), b = Q.row(1), c = Q.row(2);
-  const double aa = a.dot(a) - 1.0, bb = b.dot(b) - 1.0, cc = c.dot(c) - 1.0, ab = a.dot(b), ac = a.dot(c),
-               bc = b.dot(c);
-  return aa * aa + bb * bb + cc * cc + 2.0 * (ab * ab + ac * ac + bc * bc) < 1e-16 && a.dot(b.cross(c)) > 0.0;
+// triple product (written out on the row-major array: Eigen's general product and determinant
+// took 2.7 % of an MPM step, bench/RESULTS.md 1s).
+bool proper_rotation(const double* r) {
+  bool finite = true;
+  for (int i = 0; i < 9; ++i) finite = finite && std::isfinite(r[i]);
+  if (!finite) return false;
+  const double* a = r;
+  const double* b = r + 3;
+  const double* c = r + 6;
+  const auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  const double aa = dot(a, a) - 1.0, bb = dot(b, b) - 1.0, cc = dot(c, c) - 1.0, ab = dot(a, b), ac = dot(a, c),
+               bc = dot(b, c);
+  const double det = a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+                     a[2] * (b[0] * c[1] - b[1] * c[0]);
+  return aa * aa + bb * bb + cc * cc + 2.0 * (ab * ab + ac * ac + bc * bc) < 1e-16 && det > 0.0;
 }
 
 #define ACST_ROTATION_RULE "rotation must be a finite proper orthogonal 3x3 matrix, row-major (|Q Q^T - I| < 1e-8, det Q > 0)"
-
-// Q stress Q^T and every tensorial state variable turned alike, into copies (s: 6, q: the
-// model's state size).
-void rotated_copy(const acst_model& model, const double* stress, const double* statev, const Eigen::Matrix3d& Q,
-                  double* s, double* q) {
-  std::copy(statev, statev + state_size_of(model), q);
-  stress_from_model(acst::rotate(stress_to_model(stress), Q), s);
-  rotate_tensorial_state(q, model.kind->state(), Q);
-}
 
 }  // namespace
 
@@ -207,14 +203,13 @@ acst_status acst_diagnostics(double* out, const acst_model* model, const double*
 acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation) {
   ACST_REQUIRE(stress && model && rotation && (statev || state_size_of(*model) == 0),
                "acst_rotate_state: a required pointer argument is NULL");
-  const Eigen::Matrix3d Q = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rotation);
-  ACST_REQUIRE(proper_rotation(Q), "acst_rotate_state: " ACST_ROTATION_RULE);
+  ACST_REQUIRE(proper_rotation(rotation), "acst_rotate_state: " ACST_ROTATION_RULE);
   // Rotated into copies and the result checked: a state that was not physical is not after the
   // rotation either (the scalars stay, NaN stays, p is invariant), and a rotation keeps p only in
   // exact arithmetic: with a shear 1e300 times p the round-off can leave p of either sign (found
   // by fuzz_c_abi).
   double s[6], q[ACST_NSTATV];
-  rotated_copy(*model, stress, statev, Q, s, q);
+  model->kind->rotated_copy(stress, statev, rotation, s, q);
   if (const std::string problem = model->kind->state_problem(s, q); !problem.empty())
     return make_status(ACST_NONPHYSICAL_STATE, "acst_rotate_state: " + problem, 1.0);
   std::copy(s, s + 6, stress);
@@ -226,22 +221,13 @@ acst_status acst_update_rotated(double* stress, double* statev, double* tangent,
                                 const acst_model* model, const double* rotation, const double* dstrain) {
   ACST_REQUIRE(stress && model && rotation && dstrain && (statev || state_size_of(*model) == 0),
                "acst_update_rotated: a required pointer argument is NULL");
-  const Eigen::Matrix3d Q = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rotation);
-  ACST_REQUIRE(proper_rotation(Q), "acst_update_rotated: " ACST_ROTATION_RULE);
+  ACST_REQUIRE(proper_rotation(rotation), "acst_update_rotated: " ACST_ROTATION_RULE);
   ACST_GUARD({
-    // The rotated copies go straight to the update, whose entry checks refuse what is not finite
-    // or not physical and whose OK vouches for what it returns: the rotated state is never handed
-    // out, so acst_rotate_state's own check of it and its copies back are not needed (with them,
-    // 3-4 % of an MPM step, bench/RESULTS.md 1s). The numbers are those of the two calls.
-    double s[6], q[ACST_NSTATV];
-    rotated_copy(*model, stress, statev, Q, s, q);
     acst::integration::Report rep;
-    const acst_status st = model->kind->update(s, q, tangent, dstrain, rep);
+    const acst_status st = model->kind->update_rotated(stress, statev, tangent, rotation, dstrain, rep);
     if (counters) copy_counters(rep, counters);
-    if (st.code != ACST_OK) return st;
-    std::copy(s, s + 6, stress);
-    std::copy(q, q + state_size_of(*model), statev);
-    return ok_status();  // built in the caller's status, not copied there (as in acst_update)
+    if (st.code == ACST_OK) return ok_status();  // built in the caller's status (acst_update)
+    return st;
   })
 }
 
@@ -255,8 +241,8 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
   ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv),
                "acst_update_rotated_batch: strides must be at least 6 (stress) and acst_state_size (state)");
   ACST_GUARD({
-    // In blocks: each point turned into copies as acst_update_rotated turns it, the block's
-    // copies updated together, the good ones copied back.
+    // In blocks of points with a proper rotation, updated in place together (a failed point
+    // stays as it came).
     constexpr int block = 16;
     acst_status first = ok_status();
     size_t first_point = n;
@@ -267,39 +253,33 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
     };
     for (size_t start = 0; start < n; start += block) {
       const int m = static_cast<int>(std::min<size_t>(block, n - start));
-      double s[block][6], q[block][ACST_NSTATV];
       double *s_ptr[block], *q_ptr[block];
-      const double* e_ptr[block];
+      const double *r_ptr[block], *e_ptr[block];
       int index[block], codes[block];
       acst::integration::Report reports[block];
       int used = 0;
       for (int k = 0; k < m; ++k) {
         const size_t i = start + static_cast<size_t>(k);
-        const Eigen::Matrix3d Q = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rotation + 9 * i);
-        if (!proper_rotation(Q)) {
+        if (!proper_rotation(rotation + 9 * i)) {
           if (point_status) point_status[i] = ACST_INVALID_INPUT;
           if (point_counters) point_counters[i] = acst_counters{};
           note_failure(i, ACST_INVALID_INPUT, "acst_update_rotated_batch: " ACST_ROTATION_RULE, 1.0);
           continue;
         }
-        rotated_copy(*model, stress + i * stress_stride, statev ? statev + i * statev_stride : nullptr, Q, s[used],
-                     q[used]);
-        s_ptr[used] = s[used];
-        q_ptr[used] = q[used];
+        s_ptr[used] = stress + i * stress_stride;
+        q_ptr[used] = statev ? statev + i * statev_stride : nullptr;
+        r_ptr[used] = rotation + 9 * i;
         e_ptr[used] = dstrain + 6 * i;
         index[used++] = k;
       }
       acst_status failure = ok_status();
-      model->kind->update_points(used, s_ptr, q_ptr, e_ptr, codes, reports, failure);
+      model->kind->update_rotated_points(used, s_ptr, q_ptr, r_ptr, e_ptr, codes, reports, failure);
       bool failure_named = false;  // `failure` is the block's first failed point's status
       for (int u = 0; u < used; ++u) {
         const size_t i = start + static_cast<size_t>(index[u]);
         if (point_status) point_status[i] = codes[u];
         if (point_counters) copy_counters(reports[u], &point_counters[i]);
-        if (codes[u] == ACST_OK) {
-          std::copy(s[u], s[u] + 6, stress + i * stress_stride);
-          if (nstatv) std::copy(q[u], q[u] + nstatv, statev + i * statev_stride);
-        } else if (!failure_named) {
+        if (codes[u] != ACST_OK && !failure_named) {
           failure_named = true;
           note_failure(i, failure.code, failure.message, failure.suggested_step_factor);
         }

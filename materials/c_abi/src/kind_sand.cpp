@@ -1,6 +1,7 @@
 // ACST and its isotropic reduction behind the C ABI: the substepping integrator of
 // acst::Material, ten state variables (fabric, void ratio, H, substep hint, floor resets).
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -62,41 +63,37 @@ class SandKind final : public ModelKind {
     return update_point(stress, statev, tangent, material_, dstrain, rep);
   }
 
-  // Up to UpdateLanes::width points at a time in SIMD lanes (acst/update_lanes.hpp); the points
-  // the lanes leave, and those update_point would refuse before converting, go through
-  // update_point. The lanes' numbers are update_point's, so every point's are.
-  void update_points(int m, double* const* stress, double* const* statev, const double* const* dstrain, int* codes,
-                     integration::Report* reports, acst_status& failure) const override {
-    if (!lanes_apply(material_)) return ModelKind::update_points(m, stress, statev, dstrain, codes, reports, failure);
+  // Up to UpdateLanes::width points at a time in SIMD lanes (acst/update_lanes.hpp), each turned
+  // straight into its lane and a done lane's result written straight back (through a State and
+  // Eigen temporaries, the copies stalled on store forwarding: bench/RESULTS.md 1aa); the points
+  // the lanes leave go through update_rotated. The lanes' numbers are update_point's after
+  // rotated_copy's turn, so every point's are.
+  void update_rotated_points(int m, double* const* stress, double* const* statev, const double* const* r,
+                             const double* const* dstrain, int* codes, integration::Report* reports,
+                             acst_status& failure) const override {
+    if (!lanes_apply(material_))
+      return ModelKind::update_rotated_points(m, stress, statev, r, dstrain, codes, reports, failure);
     constexpr int W = UpdateLanes::width;
     for (int first = 0; first < m; first += W) {
+      const int end = std::min(m, first + W);
       UpdateLanes lanes;
       int point[W] = {};
-      State states[W];
-      for (int k = first; k < m && k < first + W; ++k) {
+      for (int k = first; k < end; ++k) {
         codes[k] = -1;  // not yet updated
-        if (!state_variables_finite(statev[k])) continue;
-        const int l = lanes.n++;
-        point[l] = k;
-        State& s = states[l];
-        s.stress = stress_to_model(stress[k]);
-        fill_state(s, statev[k]);
-        put_lane(lanes, l, s, strain_to_model(dstrain[k]));
+        if (!put_turned(lanes, lanes.n, stress[k], statev[k], r[k], dstrain[k])) continue;
+        point[lanes.n++] = k;
       }
       update_lanes(material_, lanes);
       for (int l = 0; l < lanes.n; ++l) {
         if (!lanes.done[l]) continue;
         const int k = point[l];
-        State& s = states[l];
-        take_lane(lanes, l, s);
-        stress_from_model(s.stress, stress[k]);
-        store_state(s, statev[k]);
+        take_done(lanes, l, stress[k], statev[k]);
         reports[k] = lane_report(lanes, l);
         codes[k] = ACST_OK;
       }
-      for (int k = first; k < m && k < first + W; ++k) {
+      for (int k = first; k < end; ++k) {
         if (codes[k] != -1) continue;
-        const acst_status st = update(stress[k], statev[k], nullptr, dstrain[k], reports[k]);
+        const acst_status st = update_rotated(stress[k], statev[k], nullptr, r[k], dstrain[k], reports[k]);
         codes[k] = st.code;
         if (st.code != ACST_OK && failure.code == ACST_OK) failure = st;
       }
@@ -128,6 +125,44 @@ class SandKind final : public ModelKind {
   }
 
  private:
+  // Into lane l, the state of rotated_copy(stress, statev, r) as update_point reads it and the
+  // increment, for a turn about axis 3 (a plane-strain host's); false, and the lane not written,
+  // where update_point would refuse the state before converting (a state variable not finite)
+  // and for other turns, which give shear out of the plane that the lanes leave anyway.
+  static bool put_turned(UpdateLanes& lanes, int l, const double* stress, const double* statev, const double* r,
+                         const double* dstrain) {
+    if (!turns_about_axis3(r)) return false;
+    double a[6], s[6], f[6];
+    for (int i = 0; i < 6; ++i) a[i] = stress_entry_to_model(stress, i);
+    rotate_about_axis3(a, r[0], r[1], r[3], r[4], s);
+    rotate_about_axis3(statev + slot_fabric, r[0], r[1], r[3], r[4], f);
+    bool finite = std::isfinite(statev[slot_void_ratio]) && std::isfinite(statev[slot_H]) &&
+                  std::isfinite(statev[slot_floor_resets]);
+    for (int i = 0; i < 6; ++i) finite = finite && std::isfinite(f[i]);
+    if (!finite) return false;
+    for (int i = 0; i < 6; ++i) {
+      lanes.stress[i][l] = s[i];
+      lanes.fabric[i][l] = f[i];
+      lanes.strain_increment[i][l] = strain_entry_to_model(dstrain, i);
+    }
+    lanes.void_ratio[l] = statev[slot_void_ratio];
+    lanes.H[l] = statev[slot_H];
+    lanes.substep_hint[l] = statev[slot_substep_hint];
+    return true;
+  }
+
+  // Done lane l back into the point's arrays, as update_point's store_state writes them.
+  static void take_done(const UpdateLanes& lanes, int l, double* stress, double* statev) {
+    for (int i = 0; i < 6; ++i) {
+      stress[i] = stress_entry_from_model(lanes.stress[i][l]);
+      statev[slot_fabric + i] = lanes.fabric[i][l];
+    }
+    statev[slot_void_ratio] = lanes.void_ratio[l];
+    statev[slot_H] = lanes.H[l];
+    statev[slot_substep_hint] = lanes.substep_hint[l];
+    statev[slot_floor_resets] = floor_resets_of(statev);
+  }
+
   static State state_of(const double* stress, const double* statev) {
     State s;
     s.stress = stress_to_model(stress);

@@ -31,11 +31,20 @@ class ModelKind {
   // Stress and state unchanged unless the status is OK; `rep` gets the counters.
   virtual acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
                              integration::Report& rep) const = 0;
-  // update() (no tangent) of m points at once, each's code in codes and counters in reports; a
-  // failed point's status also in `failure` (the first one's only). By default one after the
-  // other; a kind may update several points together where each point's numbers stay update()'s.
-  virtual void update_points(int m, double* const* stress, double* const* statev, const double* const* dstrain,
-                             int* codes, integration::Report* reports, acst_status& failure) const;
+  // The stress and the tensorial state variables turned by the row-major rotation r (T -> Q T
+  // Q^T, acst_rotate_state) into copies s (6) and q (the state size), the others copied.
+  void rotated_copy(const double* stress, const double* statev, const double* r, double* s, double* q) const;
+  // update() of the state turned by r (rotated_copy): acst_update_rotated's numbers, in place,
+  // and stress and state unchanged unless the status is OK.
+  acst_status update_rotated(double* stress, double* statev, double* tangent, const double* r,
+                             const double* dstrain, integration::Report& rep) const;
+  // update_rotated() (no tangent) of m points at once, each's code in codes and counters in
+  // reports; a failed point's status also in `failure` (the first one's only). By default one
+  // after the other; a kind may update several points together where each point's numbers stay
+  // update_rotated()'s.
+  virtual void update_rotated_points(int m, double* const* stress, double* const* statev, const double* const* r,
+                                     const double* const* dstrain, int* codes, integration::Report* reports,
+                                     acst_status& failure) const;
   // "" for a stress and state an update may start from, else what is wrong with which value
   // (the entry check of acst_diagnostics, acst_wave_speed, acst_rotate_state). By default:
   // a finite stress and finite state variables.

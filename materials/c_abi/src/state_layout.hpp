@@ -17,14 +17,19 @@ inline constexpr StateLayout sand_state_layout{state_names, state_size, fabric_o
 static_assert(state_size == ACST_NSTATV, "ACST_NSTATV is the sand state size");
 static_assert(slot_void_ratio == slot_fabric + 6, "the fabric takes six Voigt slots");
 
+// The floor-reset count as a State holds it. A counter only: an unusable value restarts it
+// rather than making the state non-physical.
+inline int floor_resets_of(const double* statev) {
+  const double resets = statev[slot_floor_resets];
+  return (resets >= 0.0 && resets < 2e9) ? static_cast<int>(resets) : 0;
+}
+
 inline void fill_state(State& s, const double* statev) {
   for (int i = 0; i < 6; ++i) s.fabric[i] = statev[slot_fabric + i];
   s.void_ratio = statev[slot_void_ratio];
   s.H = statev[slot_H];
   s.substep_hint = statev[slot_substep_hint];
-  // A counter only: an unusable value restarts it rather than making the state non-physical.
-  const double resets = statev[slot_floor_resets];
-  s.pressure_floor_resets = (resets >= 0.0 && resets < 2e9) ? static_cast<int>(resets) : 0;
+  s.pressure_floor_resets = floor_resets_of(statev);
 }
 
 inline void store_state(const State& s, double* statev) {

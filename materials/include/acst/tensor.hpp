@@ -72,18 +72,32 @@ inline bool turns_about_axis3(const Eigen::Matrix3d& Q) {
   return Q(0, 2) == 0.0 && Q(1, 2) == 0.0 && Q(2, 0) == 0.0 && Q(2, 1) == 0.0 && Q(2, 2) == 1.0;
 }
 
-// rotate_general(a, Q) for such a Q: the same products and sums, less the terms that are exact
-// zeros, so the same result (tests/objectivity_test.cpp) for a fraction of the work.
-inline Sym rotate_about_axis3(const Sym& a, const Eigen::Matrix3d& Q) {
-  const double q00 = Q(0, 0), q01 = Q(0, 1), q10 = Q(1, 0), q11 = Q(1, 1);
+// Whether a row-major rotation r turns about axis 3 only (turns_about_axis3 of the matrix).
+inline bool turns_about_axis3(const double* r) {
+  return r[2] == 0.0 && r[5] == 0.0 && r[6] == 0.0 && r[7] == 0.0 && r[8] == 1.0;
+}
+
+// rotate_general(a, Q) for such a Q, given its in-plane entries q00 q01 q10 q11, into out (6
+// entries, not a): the same products and sums, less the terms that are exact zeros, so the same
+// result (tests/objectivity_test.cpp) for a fraction of the work.
+inline void rotate_about_axis3(const double* a, double q00, double q01, double q10, double q11, double* out) {
   const double t00 = q00 * a[0] + q01 * a[3], t01 = q00 * a[3] + q01 * a[1];  // (Q a), rows 1 and 2
   const double t10 = q10 * a[0] + q11 * a[3], t11 = q10 * a[3] + q11 * a[1];
   const double r01 = t00 * q10 + t01 * q11, r10 = t10 * q00 + t11 * q01;
   const double r02 = q00 * a[4] + q01 * a[5], r20 = a[4] * q00 + a[5] * q01;
   const double r12 = q10 * a[4] + q11 * a[5], r21 = a[4] * q10 + a[5] * q11;
-  return (Sym() << t00 * q00 + t01 * q01, t10 * q10 + t11 * q11, a[2], 0.5 * (r01 + r10), 0.5 * (r02 + r20),
-          0.5 * (r12 + r21))
-      .finished();
+  out[0] = t00 * q00 + t01 * q01;
+  out[1] = t10 * q10 + t11 * q11;
+  out[2] = a[2];
+  out[3] = 0.5 * (r01 + r10);
+  out[4] = 0.5 * (r02 + r20);
+  out[5] = 0.5 * (r12 + r21);
+}
+
+inline Sym rotate_about_axis3(const Sym& a, const Eigen::Matrix3d& Q) {
+  Sym out;
+  rotate_about_axis3(a.data(), Q(0, 0), Q(0, 1), Q(1, 0), Q(1, 1), out.data());
+  return out;
 }
 
 // Q a Q^T for a rotation Q (objective rotation of stress and fabric).

@@ -37,8 +37,21 @@ struct UpdateLanes {
 void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_increment);
 void take_lane(const UpdateLanes& lanes, int l, State& state);
 
-// The report Material::update gives for done lane l (status OK and the counters of its route).
-integration::Report lane_report(const UpdateLanes& lanes, int l);
+// The report Material::update gives for done lane l (status OK and the counters of its route);
+// inline, so that a caller's copy of it is built in place.
+inline integration::Report lane_report(const UpdateLanes& lanes, int l) {
+  integration::Report rep;
+  if (lanes.plastic[l]) {
+    rep.plastic = true;
+    rep.counters.rate_evaluations = 3;  // the elastic trial's rate and the two stages'
+    rep.counters.substeps_accepted = 1;
+    rep.counters.guard_lode_clamp = lanes.guard_lode_clamp[l];
+    rep.counters.guard_h_floor = lanes.guard_h_floor[l];
+  } else {
+    rep.counters.rate_evaluations = 2;  // Heun's two elastic rates
+  }
+  return rep;
+}
 
 // Whether update_lanes can do anything for this material (ME without tangent, isotropic
 // elasticity) in this build (x86-64 without ACST_NATIVE: materials/CMakeLists.txt); where not,
