@@ -74,3 +74,40 @@ TEST(B2gimpShapeFunctions, ContinuousWithFiniteDifferenceSlopesInEveryRange) {
     }
   }
 }
+
+// The weights as the ranges are written, one scalar operation at a time: the loops' form (the
+// terms of l worked out once, divisions in pairs) must give these numbers bit for bit, since the
+// footing's results are compared bit for bit across builds.
+TEST(B2gimpShapeFunctions, PairedDivisionsGiveThePlainFormulasNumbers) {
+  const auto plain = [](double xi, double l) {
+    const double a = std::fabs(xi), inv_l = 1.0 / l;
+    double w = 0.0, d = 0.0;
+    if (a < 0.5 - l) {
+      w = 0.75 - a * a - l * l / 3.0;
+      d = -2.0 * a;
+    } else if (a < 0.5 + l) {
+      const double b = a - l, c = 1.5 - a - l;
+      w = (0.5 - 0.75 * b + b * b * b / 3.0 - c * c * c / 6.0) * (0.5 * inv_l);
+      d = (0.5 * c * c - (0.75 - b * b)) * (0.5 * inv_l);
+    } else if (a <= 1.5 - l) {
+      w = 0.5 * (1.5 - a) * (1.5 - a) + l * l / 6.0;
+      d = a - 1.5;
+    } else if (a < 1.5 + l) {
+      const double c = 1.5 + l - a;
+      w = c * c * c * (inv_l / 12.0);
+      d = -c * c * (0.25 * inv_l);
+    }
+    return B2gimpValue{w, xi < 0.0 ? -d : d};
+  };
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-2.2, 2.2);
+  for (double l : {0.5, 0.25, 1.0 / 6.0, 0.125}) {
+    const B2gimpDomain domain(l);
+    for (int k = 0; k < 20000; ++k) {
+      const double xi = u(rng);
+      const B2gimpValue got = b2gimp(xi, domain), want = plain(xi, l);
+      ASSERT_EQ(got.w, want.w) << "l " << l << " xi " << xi;
+      ASSERT_EQ(got.dw, want.dw) << "l " << l << " xi " << xi;
+    }
+  }
+}

@@ -11,7 +11,7 @@ ContactForce Footing::contact(const ContactParticle& p, double& friction, double
   ContactForce out;
   const double half = 0.5 * spec_.width, left = centre_x() - half, right = centre_x() + half, base = base_y();
   const double x0 = p.x - p.half_x, x1 = p.x + p.half_x, y0 = p.y - p.half_y, y1 = p.y + p.half_y;
-  if (x1 <= left || x0 >= right || y1 <= base) {  // apart: no force, the spring relaxes
+  if (!overlaps(p.x, p.y, p.half_x, p.half_y)) {  // apart: no force, the spring relaxes
     friction = 0.0;
     return out;
   }

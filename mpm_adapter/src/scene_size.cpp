@@ -9,6 +9,7 @@
 #include "acst_common/parallel_for.hpp"
 #include "acst_mpm/particle_track.hpp"
 #include "acst_mpm/runner.hpp"
+#include "acst_mpm/step_scratch.hpp"
 
 namespace acst::mpm {
 namespace f = acst::common::fields;
@@ -17,11 +18,12 @@ namespace {
 
 // Bytes a particle costs: its arrays (Particles: 26 doubles, the state variables, the material
 // index), their copy in a checkpoint's buffer, the step's shape-function cache and mapped
-// velocities (2 ints, 18 doubles), the footing contact, the fields of a frame or contour figure
-// (8 doubles), the peak snapshot (4 doubles) and a frame's text (about 400 characters).
+// velocities (2 ints, 18 doubles), the footing contact (a list entry, at most one per
+// particle), the fields of a frame or contour figure (8 doubles), the peak snapshot (4 doubles)
+// and a frame's text (about 400 characters).
 double bytes_per_particle(int state_size, bool footing) {
   const double arrays = 8.0 * (26 + state_size) + 4.0;
-  return 2.0 * arrays + 8.0 + 8.0 * 18 + (footing ? sizeof(ContactForce) : 0.0) + 8.0 * 8 + 8.0 * 4 + 400.0;
+  return 2.0 * arrays + 8.0 + 8.0 * 18 + (footing ? sizeof(StepScratch::Touch) : 0.0) + 8.0 * 8 + 8.0 * 4 + 400.0;
 }
 
 // Bytes a grid node costs: 14 nodal fields, its constraints (2 ints, 2 doubles) and each

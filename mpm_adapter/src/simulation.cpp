@@ -84,9 +84,10 @@ void Simulation::prepare() {
   for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
   w.pvx.assign(n, 0.0);
   w.pvy.assign(n, 0.0);
-  w.contact.assign(boundaries_.footing.uses_contact() ? n : 0, ContactForce{});
   w.nx = grid_.nx;
   w.scatter.configure(settings_.threads, N);
+  w.touching_of_thread.assign(static_cast<std::size_t>(w.scatter.threads()), StepScratch::TouchList{});
+  w.touching.clear();
   if (clock_.step == 0 || particles_.wave_speed.empty() ||
       std::all_of(particles_.wave_speed.begin(), particles_.wave_speed.end(), [](double c) { return c == 0.0; }))
     refresh_wave_speeds();
@@ -136,10 +137,22 @@ double Simulation::stable_time_step() const {
   struct alignas(64) Largest {  // one cache line per thread
     double fastest = 0.0, omega2 = 0.0;
   };
+  // A particle's exact term (hypot, divisions) is worked out only where a bound says it could
+  // pass the thread's largest so far; the bounds hold with a margin far above the terms' rounding,
+  // so the maxima are the same numbers (a NaN fails every test and goes to the exact term, which
+  // std::max ignores as before).
+  constexpr double margin = 1.0 + 1e-12;
+  const double k_bound = contact ? boundaries_.footing.spec().penalty_factor * c_contact * c_contact * width / grid_.h * margin : 0.0;
   std::vector<Largest> of(work_.scatter.threads());
   parallel_for(work_.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    of[t].fastest = std::max(of[t].fastest, P.wave_speed[p] * scale + std::hypot(P.vx[p], P.vy[p]));
-    if (contact) of[t].omega2 = std::max(of[t].omega2, contact_stiffness(p, c_contact) * width / P.mass[p]);
+    const double c = P.wave_speed[p] * scale;
+    if (!(c + (std::fabs(P.vx[p]) + std::fabs(P.vy[p])) * margin <= of[t].fastest))  // hypot <= |vx| + |vy|
+      of[t].fastest = std::max(of[t].fastest, c + std::hypot(P.vx[p], P.vy[p]));
+    if (!contact) return;
+    // k_n width / m = factor c^2 width / h * rho0 V0 / (V m), with V > 0 the current volume.
+    const double V = P.volume(p);
+    if (!(V > 0.0 && k_bound * P.density[p] * P.volume_initial[p] <= of[t].omega2 * V * P.mass[p]))
+      of[t].omega2 = std::max(of[t].omega2, contact_stiffness(p, c_contact) * width / P.mass[p]);
   });
   double fastest = 0.0, omega2 = 0.0;
   for (const Largest& m : of) fastest = std::max(fastest, m.fastest), omega2 = std::max(omega2, m.omega2);
@@ -171,10 +184,13 @@ void Simulation::fail(std::size_t p, const std::string& what, const std::string&
 void Simulation::compute_shape_functions() {
   StepScratch& w = work_;
   Particles& P = particles_;
-  const double h = grid_.h, hy = grid_.hy, l = particle_half_width_;
+  const double h = grid_.h, hy = grid_.hy;
+  const B2gimpDomain domain(particle_half_width_);
+  const DoublePair spacing{h, hy};
   std::vector<long long> off_grid(w.scatter.threads(), -1);
   parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    const AxisWeights ax = axis_weights((P.x[p] - grid_.x0) / h, l), ay = axis_weights((P.y[p] - grid_.y0) / hy, l);
+    const DoublePair X = DoublePair{P.x[p] - grid_.x0, P.y[p] - grid_.y0} / spacing;
+    const AxisWeights ax = axis_weights(X[0], domain), ay = axis_weights(X[1], domain);
     if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid_.nx ||
         ay.first + 3 >= grid_.ny) {
       if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
@@ -182,11 +198,17 @@ void Simulation::compute_shape_functions() {
     }
     w.first_i[p] = ax.first;
     w.first_j[p] = ay.first;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < 4; k += 2) {
+      const DoublePair gx = DoublePair{ax.dw[k], ax.dw[k + 1]} / DoublePair{h, h};
+      const DoublePair gy = DoublePair{ay.dw[k], ay.dw[k + 1]} / DoublePair{hy, hy};
       w.wx[4 * p + k] = ax.w[k];
-      w.dwx[4 * p + k] = ax.dw[k] / h;
+      w.wx[4 * p + k + 1] = ax.w[k + 1];
+      w.dwx[4 * p + k] = gx[0];
+      w.dwx[4 * p + k + 1] = gx[1];
       w.wy[4 * p + k] = ay.w[k];
-      w.dwy[4 * p + k] = ay.dw[k] / hy;
+      w.wy[4 * p + k + 1] = ay.w[k + 1];
+      w.dwy[4 * p + k] = gy[0];
+      w.dwy[4 * p + k + 1] = gy[1];
     }
   });
   for (long long p : off_grid)
@@ -413,8 +435,8 @@ void Simulation::footing_contact() {
   Particles& P = particles_;
   const double lh = particle_half_width_ * grid_.h;
   const double dt = clock_.dt, c_contact = stiffest_wave_speed();
-  std::vector<ContactForce>& touch = w.contact;
-  parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
+  for (StepScratch::TouchList& l : w.touching_of_thread) l.touches.clear();
+  parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
     const double* F = &P.F[4 * p];
     // The domain's stretch along the axes: the shear terms would tilt its faces, which the flat
     // footing keeps flat, and under the footing's edge would inflate the box into false overlap.
@@ -424,16 +446,25 @@ void Simulation::footing_contact() {
     // trailing corner by its stretch alone, and the push grew its height faster than it moved the
     // particle down: 4 to 16 mm of overlap and 45 m/s in 40 steps (docs/mpm.md, "The footing").
     const double sx = std::min(std::fabs(F[0]), 1.0), sy = std::min(std::fabs(F[3]), 1.0);
-    const ContactParticle cp{P.x[p], P.y[p], P.vx[p], P.vy[p], lh * sx, lh * sy, P.mass[p], contact_stiffness(p, c_contact)};
-    touch[p] = f.contact(cp, P.contact_friction[p], dt);
+    const double half_x = lh * sx, half_y = lh * sy;
+    if (!f.overlaps(P.x[p], P.y[p], half_x, half_y)) {  // apart: the spring relaxes (written only if held)
+      if (P.contact_friction[p] != 0.0) P.contact_friction[p] = 0.0;
+      return;
+    }
+    const ContactParticle cp{P.x[p], P.y[p], P.vx[p], P.vy[p], half_x, half_y, P.mass[p], contact_stiffness(p, c_contact)};
+    w.touching_of_thread[t].touches.push_back({p, f.contact(cp, P.contact_friction[p], dt)});
   });
   // Summed in particle order: the same result for any thread count.
+  w.touching.clear();
+  for (const StepScratch::TouchList& l : w.touching_of_thread)
+    w.touching.insert(w.touching.end(), l.touches.begin(), l.touches.end());
+  std::sort(w.touching.begin(), w.touching.end(),
+            [](const StepScratch::Touch& a, const StepScratch::Touch& b) { return a.particle < b.particle; });
   Reaction sum;
   ContactSummary c;
   const double xc = f.centre_x(), yc = f.base_y();
-  for (std::size_t p = 0; p < P.n; ++p) {
-    const ContactForce& t = touch[p];
-    if (!t.touching) continue;
+  for (const StepScratch::Touch& touch : w.touching) {
+    const ContactForce& t = touch.force;
     sum.fx += t.fx;
     sum.fy += t.fy;
     c.moment += (t.at_x - xc) * t.fy - (t.at_y - yc) * t.fx;
@@ -457,9 +488,8 @@ void Simulation::footing_contact() {
 void Simulation::spread_contact_forces() {
   StepScratch& w = work_;
   const double h = grid_.h;
-  for (std::size_t p = 0; p < particles_.n; ++p) {
-    const ContactForce& t = w.contact[p];
-    if (!t.touching) continue;
+  for (const StepScratch::Touch& touch : w.touching) {
+    const ContactForce& t = touch.force;
     const double u = (t.at_x - grid_.x0) / h, v = (t.at_y - grid_.y0) / grid_.hy;
     const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
     const double a = u - i, b = v - j;

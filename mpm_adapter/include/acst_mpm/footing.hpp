@@ -8,8 +8,9 @@
 //   every particle whose domain overlaps it is pushed out through the face its centre lies
 //   beyond (the base for a centre under the base; for a centre inside the outline or at a
 //   corner, the face the domain penetrates least) by a force k_n * depth * (contact
-//   length), k_n = factor * M / h with M the particle's own constrained modulus (a contact layer
-//   as stiff as h / factor of that soil), and a dashpot (half critical) on the approach speed
+//   length), k_n = factor * M / h with M = rho c_max^2 from the particle's density and the
+//   stiffest particle's wave speed (a contact layer as stiff as h / factor of the stiffest
+//   soil), and a dashpot (half critical) on the approach speed
 //   (never pulling), with friction on the base (rough: no slip while pressed;
 //   smooth; or Coulomb with a coefficient) through a tangential spring, and nothing once
 //   separated. The load is a sum over particles, continuous in the footing's position.
@@ -48,7 +49,7 @@ class Footing {
     FootingContact contact = FootingContact::penalty;
     FootingInterface interface = FootingInterface::rough;
     double friction = 0.0;        // Coulomb coefficient (interface coulomb)
-    double penalty_factor = 4.0;  // k_n = factor * M / h
+    double penalty_factor = 4.0;  // k_n = factor * M / h (above)
     double ramp_time = 0.0;       // s over which the speed rises from zero (0: none)
   };
   // How far it has moved and the work it has done on the soil (checkpointed).
@@ -71,6 +72,13 @@ class Footing {
 
   // Node rows: prescribes its velocity on the nodes it covers (reaction set reaction_footing).
   void constrain(const Grid& grid, NodeConstraints& c) const;
+
+  // Whether a particle's domain (centre x, y; half-extents half_x, half_y) overlaps the footing:
+  // the contact's own test, asked before the particle's stiffness is worked out.
+  bool overlaps(double x, double y, double half_x, double half_y) const {
+    const double half = 0.5 * spec_.width;
+    return !(x + half_x <= centre_x() - half || x - half_x >= centre_x() + half || y + half_y <= base_y());
+  }
 
   // Penalty contact on one particle. `friction` is the tangential force the base holds on it
   // (N/m along x), carried from step to step; dt the step.

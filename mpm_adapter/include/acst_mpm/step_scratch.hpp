@@ -24,8 +24,20 @@ struct StepScratch {
   std::vector<double> mass_body, fx_body, fy_body;
   // Per-particle scratch: velocities mapped from the grid.
   std::vector<double> pvx, pvy;
-  // Per-particle footing contact of this step (force in N/m and where it acts).
-  std::vector<ContactForce> contact;
+  // This step's footing contacts in particle order: the particle and the force on it (N/m, and
+  // where it acts). Each thread lists its own on its own cache line, and only the few touching
+  // particles are written: a force stored for every particle, then read by the serial sum, moved
+  // the cache lines of one thread's half to the other core and back every step (bench/RESULTS.md
+  // 1ab).
+  struct Touch {
+    std::size_t particle;
+    ContactForce force;
+  };
+  struct alignas(64) TouchList {
+    std::vector<Touch> touches;
+  };
+  std::vector<TouchList> touching_of_thread;
+  std::vector<Touch> touching;
   // With solver/volumetric_averaging "cell": every particle's velocity gradient (xx xy yx yy), cell
   // and current volume, and the cells' sums.
   std::vector<double> L, volume, cell_sum, cell_weight;
