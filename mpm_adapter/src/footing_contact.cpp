@@ -62,7 +62,6 @@ ContactForce Footing::contact(const ContactParticle& p, double& friction, double
   out.fx = fn * nx + ft * tx;
   out.fy = fn * ny + ft * ty;
   out.penetration = depth;
-  out.touching = true;
   return out;
 }
 

@@ -37,7 +37,6 @@ struct ContactForce {
   double fx = 0.0, fy = 0.0;
   double at_x = 0.0, at_y = 0.0;  // point of action (for the moment about the footing's centre)
   double penetration = 0.0;       // depth of overlap, m (0 when apart)
-  bool touching = false;
 };
 
 class Footing {
@@ -80,8 +79,8 @@ class Footing {
     return !(x + half_x <= centre_x() - half || x - half_x >= centre_x() + half || y + half_y <= base_y());
   }
 
-  // Penalty contact on one particle. `friction` is the tangential force the base holds on it
-  // (N/m along x), carried from step to step; dt the step.
+  // Penalty contact on one particle (all zero where it does not overlap). `friction` is the
+  // tangential force the base holds on it (N/m along x), carried from step to step; dt the step.
   ContactForce contact(const ContactParticle& p, double& friction, double dt) const;
 
   // Moves on by its velocity over dt; `on_soil` is the force it exerts on the soil (N/m).
