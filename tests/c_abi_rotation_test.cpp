@@ -166,6 +166,37 @@ TEST(CAbiRotation, InvalidRotationsAreRejectedWithStateUnchanged) {
   EXPECT_EQ(p.statev, before.statev);
 }
 
+// A turn about axis 3 has its own quick check in the library (a plane-strain host's every
+// rotation); the same turn about axis 1 goes through the general one, and the rule's terms are
+// the same numbers for both. Scaled turns around the rule's edge (|Q Q^T - I| = sqrt(2) |c^2 +
+// s^2 - 1| against 1e-8, so a scale of 1 +- 3.5e-9) must be judged alike, on both sides of it.
+TEST(CAbiRotation, PlaneTurnsAreJudgedByTheGeneralRule) {
+  AbiModel m(R"({"model": "linear_elastic", "parameters": {"E": 20000, "nu": 0.25}})");
+  int accepted = 0, rejected = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const double theta = 0.001 * (i % 97) - 0.04 + (i % 3 == 0 ? 2.5 : 0.0);
+    const double scale = 1.0 + (static_cast<double>(i % 400) - 200.0) * 2e-11 * (i % 2 == 0 ? 1.0 : -1.0) +
+                         (i % 400 < 200 ? 3.4e-9 : -3.4e-9);
+    const double c = scale * std::cos(theta), s = scale * std::sin(theta);
+    const double about_3[9] = {c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0};
+    const double about_1[9] = {1.0, 0.0, 0.0, 0.0, c, s, 0.0, -s, c};
+    Voigt a{-100, -80, -60, 5, 3, 2}, b = a;
+    const int code_3 = acst_rotate_state(a.data(), nullptr, m.get(), about_3).code;
+    const int code_1 = acst_rotate_state(b.data(), nullptr, m.get(), about_1).code;
+    ASSERT_EQ(code_3, code_1) << "theta " << theta << ", scale - 1 = " << scale - 1.0;
+    (code_3 == ACST_OK ? accepted : rejected) += 1;
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 100);
+  const double nan_turn[9] = {NAN, 0.0, 0.0, -0.0, NAN, 0.0, 0.0, 0.0, 1.0};
+  const double reflected[9] = {-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0};  // a half turn: proper
+  const double flipped[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0};    // not a turn about 3
+  Voigt v{-100, -80, -60, 5, 3, 2};
+  EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), nan_turn).code, ACST_INVALID_INPUT);
+  EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), reflected).code, ACST_OK);
+  EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), flipped).code, ACST_INVALID_INPUT);
+}
+
 TEST(CAbiRotation, ReferenceMaterialsRotateTheirStress) {
   AbiModel elastic(R"({"model": "linear_elastic", "parameters": {"E": 20000, "nu": 0.25}})");
   AbiModel plastic(R"({"model": "von_mises", "parameters": {"E": 20000, "nu": 0.25, "yield_stress": 90}})");

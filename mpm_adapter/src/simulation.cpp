@@ -225,10 +225,9 @@ void Simulation::nodal_velocity(const double* px, const double* py, double* vx, 
   const StepScratch& w = work_;
   for (std::size_t i = 0; i < grid_.nodes(); ++i) {
     const double m = w.mass[i];
-    vx[i] = m > 0.0 ? px[i] / m : 0.0;
-    vy[i] = m > 0.0 ? py[i] / m : 0.0;
-    if (w.constraints.set_x[i] != free_node) vx[i] = w.constraints.vx[i];
-    if (w.constraints.set_y[i] != free_node) vy[i] = w.constraints.vy[i];
+    const DoublePair v = m > 0.0 ? DoublePair{px[i], py[i]} / DoublePair{m, m} : DoublePair{0.0, 0.0};
+    vx[i] = w.constraints.set_x[i] != free_node ? w.constraints.vx[i] : v[0];
+    vy[i] = w.constraints.set_y[i] != free_node ? w.constraints.vy[i] : v[1];
   }
 }
 
@@ -511,7 +510,6 @@ void Simulation::internal_force_and_reactions() {
   StepScratch& w = work_;
   Particles& P = particles_;
   const std::size_t n = P.n;
-  const std::size_t N = grid_.nodes();
   {
     double* out[2] = {w.fx.data(), w.fy.data()};
     const double g = settings_.gravity, q = boundaries_.surcharge;
@@ -536,26 +534,35 @@ void Simulation::internal_force_and_reactions() {
   w.fy_body = w.fy;
   fold(w.fx.data(), FieldKind::x);
   fold(w.fy.data(), FieldKind::y);
+  // Row by row (no division to find a node's row), the share only where a reaction takes it,
+  // and the acceleration's two divisions in one instruction (the same quotients).
   const Walls::Lines wall_lines = boundaries_.walls.lines(grid_);
-  for (std::size_t i = 0; i < N; ++i) {
-    if (w.mass[i] <= 0.0) {
-      w.ax[i] = w.ay[i] = 0.0;
-      continue;
+  for (int j = 0; j < grid_.ny; ++j) {
+    for (int column = 0; column < grid_.nx; ++column) {
+      const std::size_t i = static_cast<std::size_t>(j) * grid_.nx + column;
+      const double m = w.mass[i];
+      if (m <= 0.0) {
+        w.ax[i] = w.ay[i] = 0.0;
+        continue;
+      }
+      const int wall = boundaries_.walls.wall_of(column, j, wall_lines);
+      const int set_x = w.constraints.set_x[i], set_y = w.constraints.set_y[i];
+      if (wall != free_node || set_x != free_node || set_y != free_node) {
+        const double share = w.mass_body[i] / m;
+        if (wall != free_node) {
+          reaction_[wall].fx += share * w.fx[i] - w.fx_body[i];
+          reaction_[wall].fy += share * w.fy[i] - w.fy_body[i];
+        }
+        if (set_x != free_node) reaction_[set_x].fx -= share * w.fx[i];
+        if (set_y != free_node) reaction_[set_y].fy -= share * w.fy[i];
+        // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
+        if (set_x != free_node) w.fx[i] = 0.0;
+        if (set_y != free_node) w.fy[i] = 0.0;
+      }
+      const DoublePair a = DoublePair{w.fx[i], w.fy[i]} / DoublePair{m, m};
+      w.ax[i] = a[0];
+      w.ay[i] = a[1];
     }
-    const double share = w.mass_body[i] / w.mass[i];
-    const int wall =
-        boundaries_.walls.wall_of(static_cast<int>(i % grid_.nx), static_cast<int>(i / grid_.nx), wall_lines);
-    if (wall != free_node) {
-      reaction_[wall].fx += share * w.fx[i] - w.fx_body[i];
-      reaction_[wall].fy += share * w.fy[i] - w.fy_body[i];
-    }
-    if (w.constraints.set_x[i] != free_node) reaction_[w.constraints.set_x[i]].fx -= share * w.fx[i];
-    if (w.constraints.set_y[i] != free_node) reaction_[w.constraints.set_y[i]].fy -= share * w.fy[i];
-    // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
-    if (w.constraints.set_x[i] != free_node) w.fx[i] = 0.0;
-    if (w.constraints.set_y[i] != free_node) w.fy[i] = 0.0;
-    w.ax[i] = w.fx[i] / w.mass[i];
-    w.ay[i] = w.fy[i] / w.mass[i];
   }
 }
 

@@ -49,7 +49,9 @@ void parallel_for(int threads, std::size_t n, F&& f, Schedule schedule = Schedul
 #pragma omp parallel num_threads(thread_count(threads))
     {
       const int t = omp_get_thread_num();
-#pragma omp for schedule(static)
+      // nowait: the region's own end is the one barrier (a second, the loop's, cost about a
+      // quarter of a short loop's fork and join: bench/RESULTS.md 1ac).
+#pragma omp for schedule(static) nowait
       for (std::size_t i = 0; i < n; ++i) guarded(t, i);
     }
   }

@@ -22,22 +22,26 @@ class Scatter {
   int threads() const { return threads_; }
 
   // body(p, fields) adds particle p's contributions to fields[0..k); out[k] receives the sums.
+  // The first thread adds straight into `out` and the others into buffers, then added onto it in
+  // thread order: the sum 0 + f_0 + f_1 + ... of the copies, to the bit (a sum begun at +0 is
+  // never -0, so 0 + f_0 is f_0), and on one thread no copy and no summing pass.
   template <class Body>
   void run(int k, double* const* out, std::size_t n, Body&& body) {
-    buffer_.resize(static_cast<std::size_t>(threads_) * k * nodes_);
+    buffer_.resize(static_cast<std::size_t>(threads_ - 1) * k * nodes_);
     parallel_for(threads_, static_cast<std::size_t>(threads_), [&](int, std::size_t t) {
       double* f[max_fields];
       for (int c = 0; c < k; ++c) {
-        f[c] = field(t, c, k);
+        f[c] = t == 0 ? out[c] : field(t, c, k);
         std::fill(f[c], f[c] + nodes_, 0.0);
       }
       const std::size_t begin = n * t / threads_, end = n * (t + 1) / threads_;
       for (std::size_t p = begin; p < end; ++p) body(p, f);
     });
+    if (threads_ == 1) return;
     parallel_for(threads_, nodes_, [&](int, std::size_t i) {
       for (int c = 0; c < k; ++c) {
-        double s = 0.0;
-        for (int t = 0; t < threads_; ++t) s += field(t, c, k)[i];
+        double s = out[c][i];
+        for (int t = 1; t < threads_; ++t) s += field(t, c, k)[i];
         out[c][i] = s;
       }
     });
@@ -45,7 +49,8 @@ class Scatter {
   static constexpr int max_fields = 4;
 
  private:
-  double* field(std::size_t t, int c, int k) { return buffer_.data() + (t * k + c) * nodes_; }
+  // Thread t's (t >= 1) copy of field c.
+  double* field(std::size_t t, int c, int k) { return buffer_.data() + ((t - 1) * k + c) * nodes_; }
   int threads_ = 1;
   std::size_t nodes_ = 0;
   std::vector<double> buffer_;
