@@ -189,11 +189,14 @@ TEST(CAbiRotation, PlaneTurnsAreJudgedByTheGeneralRule) {
   EXPECT_GT(accepted, 100);
   EXPECT_GT(rejected, 100);
   const double nan_turn[9] = {NAN, 0.0, 0.0, -0.0, NAN, 0.0, 0.0, 0.0, 1.0};
-  const double reflected[9] = {-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0};  // a half turn: proper
-  const double flipped[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0};    // not a turn about 3
+  const double infinite_turn[9] = {INFINITY, 0.0, 0.0, -0.0, INFINITY, 0.0, 0.0, 0.0, 1.0};
+  const double infinite_sine[9] = {0.0, INFINITY, 0.0, -INFINITY, 0.0, 0.0, 0.0, 0.0, 1.0};
+  const double half_turn[9] = {-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0};  // proper
+  const double flipped[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0};     // not a turn about 3
   Voigt v{-100, -80, -60, 5, 3, 2};
-  EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), nan_turn).code, ACST_INVALID_INPUT);
-  EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), reflected).code, ACST_OK);
+  for (const double* bad : {nan_turn, infinite_turn, infinite_sine})
+    EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), bad).code, ACST_INVALID_INPUT);
+  EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), half_turn).code, ACST_OK);
   EXPECT_EQ(acst_rotate_state(v.data(), nullptr, m.get(), flipped).code, ACST_INVALID_INPUT);
 }
 

@@ -553,11 +553,15 @@ void Simulation::internal_force_and_reactions() {
           reaction_[wall].fx += share * w.fx[i] - w.fx_body[i];
           reaction_[wall].fy += share * w.fy[i] - w.fy_body[i];
         }
-        if (set_x != free_node) reaction_[set_x].fx -= share * w.fx[i];
-        if (set_y != free_node) reaction_[set_y].fy -= share * w.fy[i];
         // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
-        if (set_x != free_node) w.fx[i] = 0.0;
-        if (set_y != free_node) w.fy[i] = 0.0;
+        if (set_x != free_node) {
+          reaction_[set_x].fx -= share * w.fx[i];
+          w.fx[i] = 0.0;
+        }
+        if (set_y != free_node) {
+          reaction_[set_y].fy -= share * w.fy[i];
+          w.fy[i] = 0.0;
+        }
       }
       const DoublePair a = DoublePair{w.fx[i], w.fy[i]} / DoublePair{m, m};
       w.ax[i] = a[0];

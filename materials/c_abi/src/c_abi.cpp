@@ -31,10 +31,10 @@ bool proper_rotation(const double* r) {
   // A turn about axis 3, [[c, s, 0], [-s, c, 0], [0, 0, 1]] (every rotation of a plane-strain
   // host), first: for it the rule below is exactly 2 a^2 < 1e-16 with a = c c + s s - 1 and
   // det = c c + s s, the same decision in each rounding (its other terms are exact zeros, and
-  // s s + c c is c c + s s), at a fraction of the cost: an MPM step rotates every particle.
+  // s s + c c is c c + s s), at a fraction of the cost: an MPM step rotates every particle. A NaN
+  // fails the equalities, an infinity the bound.
   if (r[2] == 0.0 && r[5] == 0.0 && r[6] == 0.0 && r[7] == 0.0 && r[8] == 1.0 && r[3] == -r[1] && r[4] == r[0]) {
     const double c = r[0], s = r[1];
-    if (!std::isfinite(c) || !std::isfinite(s)) return false;
     const double cs = c * c + s * s, a = cs - 1.0;
     return a * a + a * a < 1e-16 && cs > 0.0;
   }
