@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "acst_mpm/scene.hpp"
+#include "acst_footing_tool/build_simulation.hpp"
 #include "bench_args.hpp"
 
 using namespace acst::mpm;

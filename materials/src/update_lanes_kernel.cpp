@@ -3,7 +3,7 @@
 // contraction into FMA and no reassociation (the flags of this file, materials/CMakeLists.txt) and
 // with IEEE division and square root, a lane rounds exactly as the scalar code does. pow and exp
 // are called once per lane, outside the vector loops, as the scalar code calls them. A change of
-// a formula in the model's headers must be made here too: tests/update_lanes_test.cpp compares
+// a formula in the model's headers must be made here too: tests/materials/update_lanes_test.cpp compares
 // the two bit for bit over states of every kind.
 #include <cmath>
 #include <limits>

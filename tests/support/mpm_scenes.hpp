@@ -2,7 +2,7 @@
 // Small MPM scenes for the verification tests, built from JSON text like user scenes.
 #include <string>
 
-#include "acst_mpm/scene.hpp"
+#include "acst_footing_tool/build_simulation.hpp"
 
 namespace mpm_test {
 

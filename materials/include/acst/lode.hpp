@@ -38,7 +38,7 @@ inline LodeInterpolation lode_interpolation(double c, double sin3theta) {
 // and at a given c it is lower between the meridians. dg/ds = (dg/dx)/(12x^2 - 3); at triaxial
 // compression (x = 1/2) both vanish, and within delta = x - 1/2 < 1e-6 of it the quotient loses
 // digits, so there dg/ds takes its expansion -a/(3b^2) + delta a (2-c)^2/(3b^4), a = 1-c^2,
-// b = 2c-1 (derived symbolically; tests/lode_willam_warnke_test.cpp checks the joint). The arc is
+// b = 2c-1 (derived symbolically; tests/materials/lode_willam_warnke_test.cpp checks the joint). The arc is
 // continued by reflection across the meridians, so g is C2 there, not analytic: dg/ds has a
 // sqrt(1 + s) term at compression.
 // Out of line (src/lode.cpp): inlined, its acos and cos slowed every update with Li's form by
@@ -54,7 +54,7 @@ LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
 // rounded near -1 puts theta 1e-8 off. Other states take x from s as before: among them are the
 // element tests' diagonal states, which the delivered sets were fitted with, and the fit follows
 // even round-off changes of their results to another set (0.4 standard errors away, measured;
-// data/calibration/README.md). tests/lode_willam_warnke_test.cpp checks both paths.
+// data/calibration/README.md). tests/materials/lode_willam_warnke_test.cpp checks both paths.
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta, const Sym& a, double scale);
 
 // Its g alone, the same number, for the yield value (which has no use for dg/ds and its divisions).

@@ -79,7 +79,7 @@ inline bool turns_about_axis3(const double* r) {
 
 // rotate_general(a, Q) for such a Q, given its in-plane entries q00 q01 q10 q11, into out (6
 // entries, not a): the same products and sums, less the terms that are exact zeros, so the same
-// result (tests/objectivity_test.cpp) for a fraction of the work.
+// result (tests/materials/objectivity_test.cpp) for a fraction of the work.
 inline void rotate_about_axis3(const double* a, double q00, double q01, double q10, double q11, double* out) {
   const double t00 = q00 * a[0] + q01 * a[3], t01 = q00 * a[3] + q01 * a[1];  // (Q a), rows 1 and 2
   const double t10 = q10 * a[0] + q11 * a[3], t11 = q10 * a[3] + q11 * a[1];

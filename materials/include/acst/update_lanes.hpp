@@ -3,7 +3,7 @@
 // MPM host asks for most (bench/RESULTS.md 1z): a start on the yield surface loaded outwards with
 // one modified-Euler substep accepted, and an elastic increment that one Heun step integrates. Each lane computes, operation for operation, what
 // Material::update computes for its point, so a lane's result is the same to the last bit
-// (tests/update_lanes_test.cpp); a lane whose update takes any other route (a crossing of the
+// (tests/materials/update_lanes_test.cpp); a lane whose update takes any other route (a crossing of the
 // surface, a rejected substep, a guard, a failure) is left for Material::update.
 #include "acst/material.hpp"
 

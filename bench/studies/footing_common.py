@@ -1,0 +1,96 @@
+"""Helpers shared by the footing studies in bench/ (command line, load curves, gnuplot quoting)."""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def study_arguments(doc, out_name, only_help, switches=()):
+    """The command line of a study that runs acst_mpm cases: --out, --threads, --only, --tool, and
+    the study's own on/off `switches`, (flag, help) pairs."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", out_name))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--only", default="", help=only_help)
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    for flag, text in switches:
+        ap.add_argument(flag, action="store_true", help=text)
+    return ap.parse_args()
+
+
+def scene_with_absolute_paths(path):
+    """A scene file as a dict, its parameter files and lab curve made absolute (they are relative
+    to the scene's folder), so that a changed copy can be written anywhere."""
+    with open(path) as f:
+        s = json.load(f)
+    here = os.path.dirname(os.path.abspath(path))
+    s["materials"] = {k: v if isinstance(v, dict) else os.path.normpath(os.path.join(here, v))
+                      for k, v in s["materials"].items()}
+    if "lab_curve" in s.get("output", {}):
+        s["output"]["lab_curve"] = os.path.normpath(os.path.join(here, s["output"]["lab_curve"]))
+    return s
+
+
+def read_curve(path):
+    """S/B and q (kPa) columns of a load_settlement CSV or a lab curve (comment lines start with #)."""
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    return [float(r["S_over_B"]) for r in rows], [float(r["q_kPa"]) for r in rows]
+
+
+def value_at(xs, ys, x):
+    """Linear interpolation of ys at x; NaN outside the curve."""
+    for i in range(1, len(xs)):
+        if xs[i - 1] <= x <= xs[i]:
+            t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]) if xs[i] > xs[i - 1] else 0.0
+            return ys[i - 1] + t * (ys[i] - ys[i - 1])
+    return float("nan")
+
+
+def gp_quoted(text):
+    """A gnuplot single-quoted string: names and paths never become script."""
+    return "'" + str(text).replace("'", "''").replace("\n", " ") + "'"
+
+
+def max_kinetic_ratio(path, from_S_over_B=0.02):
+    """The largest kinetic-to-work ratio of a load record from S/B from_S_over_B on (the start's
+    transient left out, as acst_mpm's quasi-static check does)."""
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    return max(float(r["kinetic_over_work"]) for r in rows if float(r["S_over_B"]) >= from_S_over_B)
+
+
+def rms_difference_pct(curve, ref_curve, upto, q_scale):
+    """RMS of curve - ref_curve over S/B 0.005..upto in steps of 0.005, in % of q_scale."""
+    grid = [0.005 * k for k in range(1, int(round(upto / 0.005)) + 1)]
+    d = [value_at(*curve, x) - value_at(*ref_curve, x) for x in grid]
+    return round(100.0 * math.sqrt(sum(v * v for v in d) / len(d)) / q_scale, 2)
+
+
+def write_table(path, fields, rows):
+    """A CSV of the columns FIELDS of dict rows (other keys, e.g. curves, left out)."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(rows)
+
+
+def plot_beside_kimura(png, panels, stop_s_over_b, key="bottom right"):
+    """One panel per Kimura test, {test: (title, [(load record, label), ...])}, each with the
+    test's measured curve (data/lab/kimura_1985/TEST.csv)."""
+    lines = [f"set terminal pngcairo size {700 * len(panels)},600 noenhanced", "set datafile separator ','",
+             "set datafile commentschars '#'", f"set output {gp_quoted(png)}", f"set multiplot layout 1,{len(panels)}",
+             "set grid", f"set key {key}", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'",
+             f"set xrange [0:{stop_s_over_b}]", "set yrange [0:2600]"]
+    for test, (title, curves) in panels.items():
+        plots = [f"{gp_quoted(record)} using 'S_over_B':'q_kPa' with lines lw 2 title {gp_quoted(label)}" for record, label in curves]
+        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
+        plots.append(f"{gp_quoted(lab)} using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 lc rgb 'black' "
+                     f"title {gp_quoted('Kimura et al. (1985) ' + test)}")
+        lines += [f"set title {gp_quoted(title)}", "plot " + ", ".join(plots)]
+    lines += ["unset multiplot", ""]
+    subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)

@@ -1,0 +1,33 @@
+#pragma once
+// The MPM solver's settings (the scene's /solver, /gravity and /grid/follow_footing; docs/mpm.md).
+namespace acst::mpm {
+
+enum class ParticleUpdate { FLIP, PIC, XPIC };
+
+// When the material is called in a step (docs/mpm.md, "One step"): two halves around the particle
+// update (update-stress-average, the default), or once with the whole step before the internal
+// force (update-stress-first) or after the momentum is re-mapped (modified update-stress-last):
+// half the material calls.
+enum class StressUpdate { average, first, last };
+
+// The particles' dilation rates as the velocity field gives them, or each cell's mean (against
+// volumetric locking at several particles per cell; docs/mpm.md, "Volumetric locking").
+enum class VolumetricAveraging { none, cell };
+
+struct Settings {
+  double cfl = 0.5;
+  ParticleUpdate update = ParticleUpdate::XPIC;
+  StressUpdate stress_update = StressUpdate::average;
+  VolumetricAveraging volumetric_averaging = VolumetricAveraging::none;
+  int xpic_order = 4;   // m of XPIC(m)
+  int xpic_every = 20;  // XPIC on every k-th step, FLIP between
+  double grid_damping = 0.5;      // alpha_g, 1/s
+  double particle_damping = 0.0;  // alpha_p, 1/s
+  int wave_speed_every = 100;     // steps between refreshes of the particles' wave speeds
+  bool grid_follows_footing = false;  // grid/follow_footing: a node row stays on the footing's base
+  double mass_scaling = 1.0;      // inertial mass x this factor (weight unchanged)
+  double gravity = 0.0;           // m/s^2, acting in -y
+  int threads = 0;                // 0: OpenMP default
+};
+
+}  // namespace acst::mpm

@@ -1,0 +1,513 @@
+#include "acst_mpm/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <type_traits>
+
+#include "acst_mpm/dilation_averaging.hpp"
+#include "acst_mpm/material_frame.hpp"
+#include "acst_mpm/shape_functions.hpp"
+
+namespace acst::mpm {
+namespace {
+
+constexpr double kilo = 1000.0;  // kPa * m -> N/m: the one unit conversion of the core
+
+}  // namespace
+
+Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
+                       std::vector<std::shared_ptr<const AbiMaterial>> materials, Particles particles,
+                       double particle_half_width)
+    : grid_(grid),
+      boundaries_(boundaries),
+      settings_(settings),
+      materials_(std::move(materials)),
+      particles_(std::move(particles)),
+      particle_half_width_(particle_half_width) {
+  if (settings_.grid_follows_footing && boundaries_.footing.active()) {
+    // From the grid as built (spacing h): the base wall's row stays put, the row of the footing's
+    // starting base follows it.
+    rows_.on = true;
+    rows_.fixed_row = boundaries_.walls.base_fixed ? static_cast<int>(std::lround((boundaries_.walls.base - grid_.y0) / grid_.h)) : 0;
+    rows_.fixed_y = grid_.y0 + rows_.fixed_row * grid_.h;
+    rows_.base_row = static_cast<int>(std::lround((boundaries_.footing.base_y() - grid_.y0) / grid_.h));
+    if (rows_.base_row <= rows_.fixed_row)
+      throw SimulationError("the rows cannot follow a footing whose base lies on or below the grid's fixed row");
+  }
+  prepare();
+}
+
+void Simulation::restore(Particles particles, const Clock& clock, const Footing::Motion& motion,
+                         std::vector<double> friction) {
+  particles_ = std::move(particles);
+  clock_ = clock;
+  boundaries_.footing.motion() = motion;
+  boundaries_.footing.friction() = std::move(friction);
+  prepare();
+}
+
+bool Simulation::is_xpic_step(long long step) const {
+  if (settings_.update == ParticleUpdate::PIC) return true;
+  if (settings_.update == ParticleUpdate::FLIP) return false;
+  return (step + 1) % settings_.xpic_every == 0;
+}
+
+void Simulation::prepare() {
+  follow_footing();  // the rows for the footing's motion (a checkpoint's, on restore)
+  StepScratch& w = work_;
+  const std::size_t N = grid_.nodes(), n = particles_.n;
+  for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
+  w.constraints.resize(N);
+  w.first_i.assign(n, 0);
+  w.first_j.assign(n, 0);
+  for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
+  w.pvx.assign(n, 0.0);
+  w.pvy.assign(n, 0.0);
+  w.nx = grid_.nx;
+  w.scatter.configure(settings_.threads, N);
+  if (clock_.step == 0 || particles_.wave_speed.empty() ||
+      std::all_of(particles_.wave_speed.begin(), particles_.wave_speed.end(), [](double c) { return c == 0.0; }))
+    refresh_wave_speeds();
+}
+
+void Simulation::refresh_wave_speeds() {
+  Particles& P = particles_;
+  const std::size_t n = P.n;
+  std::vector<std::string> errors(work_.scatter.threads());
+  parallel_for(work_.scatter.threads(), n, [&](int t, std::size_t p) {
+    try {
+      const double J = P.volume(p) / P.volume_initial[p];
+      P.wave_speed[p] = materials_[P.material[p]]->wave_speed(&P.stress[6 * p],
+                                                             P.statev.data() + P.state_size * p, P.density[p] / J);
+    } catch (const std::exception& e) {
+      if (errors[t].empty()) errors[t] = "particle " + std::to_string(p) + ": " + e.what();
+    }
+  });
+  for (const auto& e : errors)
+    if (!e.empty()) throw SimulationError("step " + std::to_string(clock_.step) + ", " + e);
+}
+
+// The largest wave speed of the particles (refreshed with the time step).
+double Simulation::stiffest_wave_speed() const {
+  return particles_.wave_speed.empty() ? 0.0 : *std::max_element(particles_.wave_speed.begin(), particles_.wave_speed.end());
+}
+
+double Simulation::stable_time_step() const {
+  const Particles& P = particles_;
+  const double scale = 1.0 / std::sqrt(settings_.mass_scaling);
+  const bool contact = boundaries_.footing.uses_contact();
+  // Every step, so over the threads; a maximum is the same in any order. omega^2's maximum
+  // gives omega's (the square root is monotonic and correctly rounded) at one root per step.
+  struct alignas(64) Largest {  // one cache line per thread
+    double fastest = 0.0, omega2 = 0.0;
+  };
+  // A particle's exact term (hypot, divisions) is worked out only where a bound says it could
+  // pass the thread's largest so far; the bounds hold with a margin far above the terms' rounding,
+  // so the maxima are the same numbers (a NaN fails every test and goes to the exact term, which
+  // std::max ignores as before).
+  constexpr double margin = 1.0 + 1e-12;
+  const Footing::SpringRate spring =
+      boundaries_.footing.spring_rate(grid_.h, particle_half_width_, stiffest_wave_speed(), margin);
+  std::vector<Largest> of(work_.scatter.threads());
+  parallel_for(work_.scatter.threads(), P.n, [&](int t, std::size_t p) {
+    const double c = P.wave_speed[p] * scale;
+    if (!(c + (std::fabs(P.vx[p]) + std::fabs(P.vy[p])) * margin <= of[t].fastest))  // hypot <= |vx| + |vy|
+      of[t].fastest = std::max(of[t].fastest, c + std::hypot(P.vx[p], P.vy[p]));
+    if (contact && spring.may_exceed(P, p, of[t].omega2)) of[t].omega2 = std::max(of[t].omega2, spring.omega2(P, p));
+  });
+  double fastest = 0.0, omega2 = 0.0;
+  for (const Largest& m : of) fastest = std::max(fastest, m.fastest), omega2 = std::max(omega2, m.omega2);
+  const double omega = std::sqrt(omega2);
+  if (!(fastest > 0.0) || !std::isfinite(fastest))
+    throw SimulationError("step " + std::to_string(clock_.step) + ": no finite wave speed for the time step");
+  double dt = settings_.cfl * std::min(grid_.h, grid_.hy) / fastest;
+  // The stiffest contact spring (a whole particle width pressed) on its particle: dt <= 2 cfl /
+  // omega keeps it stable with the CFL bound's margin (no restriction at one particle per cell
+  // and factor <= 4).
+  if (omega > 0.0) dt = std::min(dt, 2.0 * settings_.cfl / omega);
+  return dt;
+}
+
+double Simulation::kinetic_energy() const {
+  double k = 0.0;
+  for (std::size_t p = 0; p < particles_.n; ++p)
+    k += 0.5 * particles_.mass[p] * (particles_.vx[p] * particles_.vx[p] + particles_.vy[p] * particles_.vy[p]);
+  return boundaries_.symmetric_half ? 2.0 * k : k;
+}
+
+void Simulation::fail(std::size_t p, const std::string& what, const std::string& reproducer) const {
+  char where[96];
+  std::snprintf(where, sizeof where, "step %lld, particle %zu at (%.4g, %.4g) m: ", clock_.step, p, particles_.x[p],
+                particles_.y[p]);
+  throw SimulationError(where + what, reproducer);
+}
+
+void Simulation::compute_shape_functions() {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  const double h = grid_.h, hy = grid_.hy;
+  const B2gimpDomain domain(particle_half_width_);
+  const DoublePair spacing{h, hy};
+  std::vector<long long> off_grid(w.scatter.threads(), -1);
+  parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
+    const DoublePair X = DoublePair{P.x[p] - grid_.x0, P.y[p] - grid_.y0} / spacing;
+    const AxisWeights ax = axis_weights(X[0], domain), ay = axis_weights(X[1], domain);
+    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid_.nx ||
+        ay.first + 3 >= grid_.ny) {
+      if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
+      return;
+    }
+    w.first_i[p] = ax.first;
+    w.first_j[p] = ay.first;
+    for (int k = 0; k < 4; k += 2) {
+      const DoublePair gx = DoublePair{ax.dw[k], ax.dw[k + 1]} / DoublePair{h, h};
+      const DoublePair gy = DoublePair{ay.dw[k], ay.dw[k + 1]} / DoublePair{hy, hy};
+      w.wx[4 * p + k] = ax.w[k];
+      w.wx[4 * p + k + 1] = ax.w[k + 1];
+      w.dwx[4 * p + k] = gx[0];
+      w.dwx[4 * p + k + 1] = gx[1];
+      w.wy[4 * p + k] = ay.w[k];
+      w.wy[4 * p + k + 1] = ay.w[k + 1];
+      w.dwy[4 * p + k] = gy[0];
+      w.dwy[4 * p + k + 1] = gy[1];
+    }
+  });
+  for (long long p : off_grid)
+    if (p >= 0) fail(static_cast<std::size_t>(p), "left the grid (the grid must reach two cells past every particle)");
+}
+
+void Simulation::apply_constraints() {
+  work_.constraints.clear();
+  boundaries_.footing.constrain(grid_, work_.constraints);
+  nodal_velocity(work_.ax.data(), work_.ay.data(), work_.vx.data(), work_.vy.data());
+}
+
+void Simulation::nodal_velocity(const double* px, const double* py, double* vx, double* vy) {
+  const StepScratch& w = work_;
+  for (std::size_t i = 0; i < grid_.nodes(); ++i) {
+    const double m = w.mass[i];
+    const DoublePair v = m > 0.0 ? DoublePair{px[i], py[i]} / DoublePair{m, m} : DoublePair{0.0, 0.0};
+    vx[i] = w.constraints.set_x[i] != free_node ? w.constraints.vx[i] : v[0];
+    vy[i] = w.constraints.set_y[i] != free_node ? w.constraints.vy[i] : v[1];
+  }
+}
+
+void Simulation::update_stress(const double* vx, const double* vy, double dt_half) {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  const int T = w.scatter.threads();
+  std::vector<long long> failed(T, -1);
+  std::vector<std::string> messages(T), reproducers(T);
+  const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
+  if (averaged) velocity_gradients_averaged(vx, vy);
+  // The loop is instantiated once per setting and chosen here: a branch inside it cost the
+  // default 1-2 % (bench/RESULTS.md 1t).
+  auto update_all = [&](auto averaged_gradients) {
+    const auto gradient = [&](std::size_t p) {  // L_ij = dv_i/dx_j: xx xy yx yy
+      std::array<double, 4> L;
+      if constexpr (decltype(averaged_gradients)::value)
+        std::copy_n(&w.L[4 * p], 4, L.begin());
+      else
+        L = w.velocity_gradient(p, vx, vy);
+      return L;
+    };
+    // In runs of AbiMaterial::batch_size particles: one call updates a run of one material (the
+    // library updates points of the common kind together, with the same numbers).
+    constexpr std::size_t run = AbiMaterial::batch_size;
+    parallel_for(T, (P.n + run - 1) / run, [&](int t, std::size_t r) {
+      const std::size_t first = r * run, n = std::min(P.n, first + run) - first;
+      std::array<double, 4 * run> Ls;
+      bool one_material = true;
+      for (std::size_t p = first; p < first + n; ++p) {
+        const std::array<double, 4> L = gradient(p);
+        std::copy(L.begin(), L.end(), &Ls[4 * (p - first)]);
+        one_material = one_material && P.material[p] == P.material[first];
+        double* F = &P.F[4 * p];
+        const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
+        F[0] += dt_half * (L[0] * F0 + L[1] * F2);
+        F[1] += dt_half * (L[0] * F1 + L[1] * F3);
+        F[2] += dt_half * (L[2] * F0 + L[3] * F2);
+        F[3] += dt_half * (L[2] * F1 + L[3] * F3);
+        double* e = &P.strain[3 * p];
+        e[0] += L[0] * dt_half;
+        e[1] += L[3] * dt_half;
+        e[2] += 0.5 * (L[1] + L[2]) * dt_half;
+      }
+      const auto note_failure = [&](std::size_t p, const acst_status& st) {
+        failed[t] = static_cast<long long>(p);
+        messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
+      };
+      if (one_material) {
+        std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
+        acst_status failure;
+        const AbiMaterial& mat = *materials_[P.material[first]];
+        const std::size_t bad = mat.update_batch(n, &P.stress[6 * first], P.statev.data() + P.state_size * first,
+                                                 Ls.data(), dt_half, &P.stress_free[first], failure, reproducer);
+        if (bad < n && failed[t] < 0) note_failure(first + bad, failure);
+        return;
+      }
+      for (std::size_t p = first; p < first + n; ++p) {
+        std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;
+        bool free = false;
+        const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p,
+                                                                &Ls[4 * (p - first)], dt_half, free, reproducer);
+        P.stress_free[p] = free;
+        if (st.code != ACST_OK && failed[t] < 0) note_failure(p, st);
+      }
+    });
+    for (int t = 0; t < T; ++t)
+      if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
+    // The followed particles' frames (a handful: outside the loop above, which stays as it was).
+    for (std::size_t k = 0; k < P.tracked.size(); ++k)
+      turn_material_frame(&P.track_frame[material_frame_size * k], gradient(static_cast<std::size_t>(P.tracked[k])).data(),
+                   dt_half);
+  };
+  if (averaged)
+    update_all(std::true_type{});
+  else
+    update_all(std::false_type{});
+}
+
+// Every particle's velocity gradient into the scratch, then each dilation rate replaced by the
+// mean over the particles in its cell (docs/mpm.md, "Volumetric locking").
+void Simulation::velocity_gradients_averaged(const double* vx, const double* vy) {
+  StepScratch& w = work_;
+  const Particles& P = particles_;
+  w.L.resize(4 * P.n);
+  w.cell.resize(P.n);
+  w.volume.resize(P.n);
+  parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
+    const std::array<double, 4> L = w.velocity_gradient(p, vx, vy);
+    std::copy(L.begin(), L.end(), &w.L[4 * p]);
+    const auto i = static_cast<std::size_t>(std::floor((P.x[p] - grid_.x0) / grid_.h));
+    const auto j = static_cast<std::size_t>(std::floor((P.y[p] - grid_.y0) / grid_.hy));
+    w.cell[p] = j * static_cast<std::size_t>(grid_.nx) + i;
+    w.volume[p] = P.volume(p);
+  });
+  average_dilation_over_cells(w.L, w.cell, w.volume, grid_.nodes(), w.cell_sum, w.cell_weight);
+}
+
+void Simulation::xpic_velocity(int order) {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  const std::size_t N = grid_.nodes();
+  // v(m) = sum_k dv(k), dv(1) = v_L, dv(k) = dv(k-1) - S+S dv(k-1), constrained parts of dv(k>1) zero.
+  std::vector<double> dvx(w.vx), dvy(w.vy);
+  w.xpx = w.vx;
+  w.xpy = w.vy;
+  for (int k = 2; k <= order; ++k) {
+    parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
+      double sx = 0.0, sy = 0.0;
+      w.stencil(p, [&](std::size_t i, double S, double, double) {
+        sx += S * dvx[i];
+        sy += S * dvy[i];
+      });
+      w.pvx[p] = sx;
+      w.pvy[p] = sy;
+    });
+    // The force is already consumed: its fields are reused as scratch.
+    w.map_to_grid<2>({w.fx.data(), w.fy.data()}, P.n,
+                     [&](std::size_t p) { return std::array<double, 2>{P.mass[p] * w.pvx[p], P.mass[p] * w.pvy[p]}; });
+    fold(w.fx.data(), FieldKind::x);
+    fold(w.fy.data(), FieldKind::y);
+    for (std::size_t i = 0; i < N; ++i) {
+      const double m = w.mass[i];
+      dvx[i] = (m > 0.0 && w.constraints.set_x[i] == free_node) ? dvx[i] - w.fx[i] / m : 0.0;
+      dvy[i] = (m > 0.0 && w.constraints.set_y[i] == free_node) ? dvy[i] - w.fy[i] / m : 0.0;
+      w.xpx[i] += dvx[i];
+      w.xpy[i] += dvy[i];
+    }
+  }
+}
+
+// One step (docs/mpm.md, "One step"): the phases in their order; the stress is updated in two
+// halves (update-stress-average), or once before the internal force or after the re-map.
+void Simulation::step() {
+  boundaries_.footing.at_time(clock_.time);
+  follow_footing();
+  refresh_time_step();
+  compute_shape_functions();
+  map_mass_and_momentum();
+  apply_constraints();
+  const StressUpdate when = settings_.stress_update;
+  const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
+  if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
+  footing_contact();
+  internal_force_and_reactions();
+  update_particles();
+  if (when != StressUpdate::first) {
+    remap_momentum();
+    update_stress(work_.ux.data(), work_.uy.data(), part);  // with the re-mapped v
+  }
+  advance_boundaries();
+}
+
+// The rows between the base wall (or the grid's first row) and the footing's base keep their
+// count and share the height between them: the base stays on its node row at every settlement
+// (docs/mpm.md, "The grid follows the footing").
+void Simulation::follow_footing() {
+  if (!rows_.on) return;
+  const double height = boundaries_.footing.base_y() - rows_.fixed_y;
+  if (!(height > 0.0))
+    throw SimulationError("step " + std::to_string(clock_.step) + ": the footing's base reached the grid's fixed row");
+  grid_.hy = height / (rows_.base_row - rows_.fixed_row);
+  grid_.y0 = rows_.fixed_y - rows_.fixed_row * grid_.hy;
+}
+
+void Simulation::refresh_time_step() {
+  if (clock_.step > 0 && clock_.step % settings_.wave_speed_every == 0) refresh_wave_speeds();
+  clock_.dt = stable_time_step();
+}
+
+// Mass and momentum to the grid, the walls' mirror images folded in.
+void Simulation::map_mass_and_momentum() {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  w.map_to_grid<3>({w.mass.data(), w.ax.data(), w.ay.data()}, P.n, [&](std::size_t p) {
+    const double m = P.mass[p];
+    return std::array<double, 3>{m, m * P.vx[p], m * P.vy[p]};
+  });
+  w.mass_body = w.mass;
+  fold(w.mass.data(), FieldKind::scalar);
+  fold(w.ax.data(), FieldKind::x);
+  fold(w.ay.data(), FieldKind::y);
+}
+
+// The footing's contact force on every particle that touches it; the footing's reaction is their
+// sum, and internal_force_and_reactions applies them to the grid.
+void Simulation::footing_contact() {
+  Footing& f = boundaries_.footing;
+  if (!f.uses_contact()) return;
+  f.touch(particles_, grid_, particle_half_width_, stiffest_wave_speed(), clock_.dt, work_.scatter.threads());
+  reaction_[reaction_footing] = f.reaction();
+}
+
+// Internal force, weight and surcharge; the walls' and the constraints' reactions; a = f/m.
+void Simulation::internal_force_and_reactions() {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  const std::size_t n = P.n;
+  {
+    double* out[2] = {w.fx.data(), w.fy.data()};
+    const double g = settings_.gravity, q = boundaries_.surcharge;
+    w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
+      const double V = kilo * P.volume(p);
+      const double* s = &P.stress[6 * p];
+      const double sxx = V * s[0], syy = V * s[1], sxy = V * s[3];
+      const double by = -P.weight_mass[p] * g - kilo * q * P.surcharge_length[p];
+      w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
+        f[0][i] -= sxx * gx + sxy * gy;
+        f[1][i] += by * S - (sxy * gx + syy * gy);
+      });
+    });
+  }
+  if (boundaries_.footing.uses_contact()) boundaries_.footing.spread(grid_, w.mass.data(), w.fx.data(), w.fy.data());
+  // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
+  // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
+  const Reaction contact = reaction_[reaction_footing];
+  reaction_.fill(Reaction{});
+  if (boundaries_.footing.uses_contact()) reaction_[reaction_footing] = contact;
+  w.fx_body = w.fx;
+  w.fy_body = w.fy;
+  fold(w.fx.data(), FieldKind::x);
+  fold(w.fy.data(), FieldKind::y);
+  // Row by row (no division to find a node's row), the share only where a reaction takes it,
+  // and the acceleration's two divisions in one instruction (the same quotients).
+  const Walls::Lines wall_lines = boundaries_.walls.lines(grid_);
+  for (int j = 0; j < grid_.ny; ++j) {
+    for (int column = 0; column < grid_.nx; ++column) {
+      const std::size_t i = static_cast<std::size_t>(j) * grid_.nx + column;
+      const double m = w.mass[i];
+      if (m <= 0.0) {
+        w.ax[i] = w.ay[i] = 0.0;
+        continue;
+      }
+      const int wall = boundaries_.walls.wall_of(column, j, wall_lines);
+      const int set_x = w.constraints.set_x[i], set_y = w.constraints.set_y[i];
+      if (wall != free_node || set_x != free_node || set_y != free_node) {
+        const double share = w.mass_body[i] / m;
+        if (wall != free_node) {
+          reaction_[wall].fx += share * w.fx[i] - w.fx_body[i];
+          reaction_[wall].fy += share * w.fy[i] - w.fy_body[i];
+        }
+        // The constraint force keeps the (already prescribed) velocity: it cancels the net force.
+        if (set_x != free_node) {
+          reaction_[set_x].fx -= share * w.fx[i];
+          w.fx[i] = 0.0;
+        }
+        if (set_y != free_node) {
+          reaction_[set_y].fy -= share * w.fy[i];
+          w.fy[i] = 0.0;
+        }
+      }
+      const DoublePair a = DoublePair{w.fx[i], w.fy[i]} / DoublePair{m, m};
+      w.ax[i] = a[0];
+      w.ay[i] = a[1];
+    }
+  }
+}
+
+// Particle velocities and positions: FLIP, or XPIC(m) (PIC = XPIC(1)), with damping. A particle
+// the material holds at its pressure floor takes the grid's velocity (PIC) in every step: it has
+// no stiffness, so the velocity FLIP keeps for it from step to step is bounded by nothing, and
+// beside the footing's corners such particles were thrown out of the grid at 4-5 m/s by the
+// stress of their neighbours (docs/mpm.md, "Stress-free particles").
+void Simulation::update_particles() {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  const std::size_t n = P.n;
+  const int T = w.scatter.threads();
+  const bool xpic = is_xpic_step(clock_.step);
+  if (xpic) xpic_velocity(settings_.update == ParticleUpdate::PIC ? 1 : settings_.xpic_order);
+  const double ag = settings_.grid_damping, ap = settings_.particle_damping;
+  parallel_for(T, n, [&](int, std::size_t p) {
+    double svx = 0, svy = 0, sax = 0, say = 0, smx = 0, smy = 0;
+    w.stencil(p, [&](std::size_t i, double S, double, double) {
+      svx += S * w.vx[i];
+      svy += S * w.vy[i];
+      sax += S * w.ax[i];
+      say += S * w.ay[i];
+      if (xpic) {
+        smx += S * w.xpx[i];
+        smy += S * w.xpy[i];
+      }
+    });
+    const double vx0 = P.vx[p], vy0 = P.vy[p];
+    double vx1, vy1;
+    const bool pic = P.stress_free[p] != 0;  // nothing in the particle can hold a velocity of its own
+    if (pic || xpic) {  // the grid's velocity: S v_L for PIC, the XPIC(m) field otherwise
+      const double bx = pic ? svx : smx, by = pic ? svy : smy;
+      vx1 = bx + sax * clock_.dt - (ag * svx + ap * vx0) * clock_.dt;
+      vy1 = by + say * clock_.dt - (ag * svy + ap * vy0) * clock_.dt;
+    } else {
+      vx1 = vx0 + (sax - ag * svx - ap * vx0) * clock_.dt;
+      vy1 = vy0 + (say - ag * svy - ap * vy0) * clock_.dt;
+    }
+    P.vx[p] = vx1;
+    P.vy[p] = vy1;
+    P.x[p] += (svx + 0.5 * (vx1 - vx0)) * clock_.dt;
+    P.y[p] += (svy + 0.5 * (vy1 - vy0)) * clock_.dt;
+  });
+}
+
+// Momentum re-extrapolated from the new particle velocities; the constrained velocity field.
+void Simulation::remap_momentum() {
+  StepScratch& w = work_;
+  Particles& P = particles_;
+  w.map_to_grid<2>({w.ux.data(), w.uy.data()}, P.n,
+                   [&](std::size_t p) { return std::array<double, 2>{P.mass[p] * P.vx[p], P.mass[p] * P.vy[p]}; });
+  fold(w.ux.data(), FieldKind::x);
+  fold(w.uy.data(), FieldKind::y);
+  nodal_velocity(w.ux.data(), w.uy.data(), w.ux.data(), w.uy.data());
+}
+
+// The footing moves on (and counts its work); then the clock.
+void Simulation::advance_boundaries() {
+  boundaries_.footing.advance(reaction_[reaction_footing], clock_.dt);
+  clock_.time += clock_.dt;
+  ++clock_.step;
+}
+
+}  // namespace acst::mpm

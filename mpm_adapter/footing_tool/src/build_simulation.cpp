@@ -1,0 +1,154 @@
+// Turns a scene into a ready simulation: grid around the bodies, walls at their extent,
+// particles with their geostatic stress and initial state (through the material ABI).
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "acst_footing_tool/build_simulation.hpp"
+#include "acst_footing_tool/scene_size.hpp"
+#include "acst_mpm/material_frame.hpp"
+
+namespace acst::mpm {
+namespace {
+
+// Vertical total stress (kPa, compression positive) at (x, y): surcharge plus the weight of the
+// bodies above in the same column.
+double overburden(const Scene& s, double x, double y) {
+  double sv = s.surcharge;
+  for (const BodySpec& b : s.bodies)
+    if (x >= b.x_min && x <= b.x_max && b.y_max > y)
+      sv += b.density * s.gravity * (b.y_max - std::max(y, b.y_min)) / 1000.0;  // Pa -> kPa
+  return sv;
+}
+
+double column_top(const Scene& s, double x) {
+  double top = -INFINITY;
+  for (const BodySpec& b : s.bodies)
+    if (x >= b.x_min && x <= b.x_max) top = std::max(top, b.y_max);
+  return top;
+}
+
+// The particle nearest each output/particle_histories position: it must be a sand's and lie
+// within a cell of the position (a position outside the soil, or in the half a symmetric run
+// leaves out, is an error, not the nearest particle far away).
+void follow_particles(const Scene& s, const std::vector<std::shared_ptr<const AbiMaterial>>& materials, Particles& P) {
+  const auto& tracks = s.output.particle_histories;
+  P.tracked.clear();
+  P.track_frame.assign(material_frame_size * tracks.size(), 0.0);
+  for (std::size_t k = 0; k < tracks.size(); ++k) {
+    const std::string at = "/output/particle_histories/" + std::to_string(k) + "/at";
+    std::size_t best = 0;
+    double best_d2 = INFINITY;
+    for (std::size_t p = 0; p < P.n; ++p) {
+      const double d2 = std::pow(P.x[p] - tracks[k].x, 2) + std::pow(P.y[p] - tracks[k].y, 2);
+      if (d2 < best_d2) best = p, best_d2 = d2;
+    }
+    if (!(best_d2 <= s.cell_size * s.cell_size))
+      throw common::InputError(at + ": no particle within a cell (" + std::to_string(s.cell_size) + " m) of (" +
+                               std::to_string(tracks[k].x) + ", " + std::to_string(tracks[k].y) +
+                               ") m in the modelled soil");
+    if (!materials[static_cast<std::size_t>(P.material[best])]->is_sand())
+      throw common::InputError(at + ": the particle there is not of a sand material (its history needs fabric, void ratio and H)");
+    P.tracked.push_back(static_cast<int>(best));
+    P.track_frame[material_frame_size * k] = 1.0;  // cos of no rotation yet
+  }
+}
+
+}  // namespace
+
+Simulation build_simulation(const Scene& scene) {
+  const bool half = scene.footing && scene.footing->symmetric_half;
+  const Scene s = modelled_part(scene);
+  const double h = s.cell_size;
+  // The reader checked the node and particle counts against their caps (scene_size.hpp).
+  const GridExtent extent = grid_extent(s);
+  const double x_min = extent.x_min, x_max = extent.x_max, y_min = extent.y_min;
+  constexpr int margin = GridExtent::margin;
+  Grid grid;
+  grid.h = grid.hy = h;
+  grid.x0 = x_min - margin * h;
+  grid.y0 = y_min - margin * h;
+  grid.nx = static_cast<int>(extent.nodes_x);
+  grid.ny = static_cast<int>(extent.nodes_y);
+
+  Boundaries boundaries;
+  Walls& walls = boundaries.walls;
+  walls.left = x_min, walls.right = x_max, walls.base = y_min;
+  walls.base_fixed = s.base_fixed;
+  walls.left_side = half ? SideWall::smooth : s.sides;  // the centre line is a symmetry plane
+  walls.right_side = s.sides;
+  boundaries.surcharge = s.surcharge;
+  boundaries.symmetric_half = half;
+
+  std::vector<std::shared_ptr<const AbiMaterial>> materials;
+  std::map<std::string, int> index;
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    materials.push_back(std::make_shared<const AbiMaterial>(s.materials[i].name, s.materials[i].json_text));
+    index[s.materials[i].name] = static_cast<int>(i);
+  }
+  int ppc = s.bodies.front().particles_per_cell;
+  std::size_t count = 0, state_size = 0;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const BodySpec& b = s.bodies[i];
+    if (b.particles_per_cell != ppc)
+      throw common::InputError("/bodies/" + std::to_string(i) + "/particles_per_cell: all bodies must use the same number (B2GIMP's uniform particle domains)");
+    const long long cells = std::llround((b.x_max - b.x_min) / h) * std::llround((b.y_max - b.y_min) / h);
+    count += static_cast<std::size_t>(cells) * ppc * ppc;
+    state_size = std::max<std::size_t>(state_size, materials[index[b.material]]->state_size());
+  }
+  if (s.footing) {
+    const double base_y = column_top(s, s.footing->centre_x);
+    if (!std::isfinite(base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
+    boundaries.footing = Footing(*s.footing, base_y);
+  }
+
+  Particles P;
+  P.resize(count, static_cast<int>(state_size));
+  const double d = h / ppc;
+  std::size_t p = 0;
+  for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
+    const BodySpec& b = s.bodies[bi];
+    const std::string path = "/bodies/" + std::to_string(bi);
+    const AbiMaterial& mat = *materials[index[b.material]];
+    double e = 0.0, deposition[3] = {0.0, 1.0, 0.0};
+    if (mat.is_sand()) {
+      if (!b.void_ratio && !b.relative_density)
+        throw common::InputError(path + ": a sand material needs void_ratio or relative_density_pct");
+      e = b.void_ratio ? *b.void_ratio : mat.void_ratio_from_relative_density(*b.relative_density);
+      // b = (-sin alpha, cos alpha, 0): alpha from the vertical (loading) axis, as in the reference study.
+      const acst_status st = acst_bedding_direction(deposition, b.bedding_angle_deg, 1, 0, -1.0);
+      if (st.code != ACST_OK) throw common::InputError(path + "/bedding_angle_deg: " + st.message);
+    }
+    const long long ncx = std::llround((b.x_max - b.x_min) / d), ncy = std::llround((b.y_max - b.y_min) / d);
+    for (long long jy = 0; jy < ncy; ++jy)
+      for (long long ix = 0; ix < ncx; ++ix, ++p) {
+        const double x = b.x_min + (ix + 0.5) * d, y = b.y_min + (jy + 0.5) * d;
+        P.x[p] = P.x_initial[p] = x;
+        P.y[p] = P.y_initial[p] = y;
+        P.volume_initial[p] = d * d;
+        P.density[p] = b.density;
+        P.weight_mass[p] = b.density * d * d;
+        P.mass[p] = P.weight_mass[p] * s.solver.mass_scaling;
+        P.material[p] = index[b.material];
+        double* sig = &P.stress[6 * p];
+        if (s.geostatic) {
+          const double sv = overburden(s, x, y);
+          sig[0] = sig[2] = -s.K0 * sv;
+          sig[1] = -sv;
+        }
+        try {
+          mat.initial_state(P.statev.data() + P.state_size * p, sig, e, deposition);
+        } catch (const MaterialError& err) {
+          throw common::InputError(path + ": particle at (" + std::to_string(x) + ", " + std::to_string(y) + "): " + err.what());
+        }
+        const bool top_row = y + d > column_top(s, x) - 1e-9 * h;
+        const bool under_footing = s.footing && std::fabs(x - s.footing->centre_x) < 0.5 * s.footing->width;
+        if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = d;
+      }
+  }
+  follow_particles(s, materials, P);
+  return Simulation(grid, boundaries, s.solver, std::move(materials), std::move(P), 0.5 / ppc);
+}
+
+}  // namespace acst::mpm

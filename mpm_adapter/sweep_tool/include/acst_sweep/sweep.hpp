@@ -1,0 +1,45 @@
+#pragma once
+// A footing sweep (docs/sweeps.md): a base scene and named cases, each the base with a few values
+// replaced, run one whole case at a time by acst_sweep (in turn, or spread over MPI ranks) and
+// gathered into one table and one overlay figure per group of cases.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "acst_footing_tool/scene.hpp"
+#include "acst_sweep/sweep_findings.hpp"
+
+namespace acst::mpm {
+
+// One case: its scene (already read and checked) and what made it.
+struct SweepCase {
+  std::string name;
+  std::vector<std::string> groups;  // the figures it appears in
+  std::string origin;              // "/cases/3": the entry of the description that made it
+  nlohmann::ordered_json varied;   // {"alpha": 20, ...}: the case's values of its entry's "vary" list
+  Scene scene;
+};
+
+struct SweepSpec {
+  std::string name, description, file, text;
+  std::vector<SweepCase> cases;
+  std::vector<double> load_at_S_over_B{0.5};  // S/B values at which the table gives q
+  bool figures = true;                         // one overlay of the load curves per group
+  std::vector<std::string> case_figures;       // files of each case copied to figures/cases/ for the report
+  std::vector<Finding> findings;               // judged in report.md
+};
+
+// Reads a sweep description (docs/sweeps.md, "The description"). Every case's scene is built and
+// read here, so a bad override fails before anything runs: InputError naming the sweep's JSON
+// path, and for a scene error also the case and the scene's own path. `extra_set`: a JSON object
+// of pointers and values (acst_sweep --set) applied to every case after the description's "set".
+SweepSpec parse_sweep(const std::string& json_text, const std::string& file, const std::string& extra_set = "");
+SweepSpec read_sweep(const std::string& path, const std::string& extra_set = "");
+
+// `scene` with `value` put at the JSON pointer `pointer`, which must name a member of an object
+// that exists (the member itself may be new; null removes it) or an element of an array that
+// exists; anything else fails at `where`.
+void set_at_pointer(nlohmann::json& scene, const std::string& pointer, const nlohmann::json& value,
+                    const std::string& where);
+
+}  // namespace acst::mpm

@@ -1,0 +1,47 @@
+#pragma once
+// One case of a sweep in its own folder (docs/sweeps.md, "Folders"): run in SWEEP/cases/.NAME.partial
+// (checkpointed there), then published whole as SWEEP/cases/NAME with its record, the row of the
+// sweep's table.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "acst_sweep/sweep.hpp"
+
+namespace acst::mpm {
+
+inline constexpr const char* sweep_cases_folder = "cases";
+inline constexpr const char* sweep_case_record = "sweep_case.json";
+
+std::string case_folder(const std::string& sweep_dir, const std::string& name);
+std::string case_partial_folder(const std::string& sweep_dir, const std::string& name);
+
+// What a case's results depend on: its scene and its materials' parameters. A checkpoint or a
+// finished case made from another fingerprint is not this case's.
+nlohmann::json case_fingerprint(const SweepCase& c);
+
+struct CaseRunOptions {
+  std::string sweep_dir;
+  int threads = 0;  // 0: the scene's solver/threads, else all cores
+  bool plot = true;
+};
+
+// Runs the case (from its checkpoint when an interrupted run of the same fingerprint left one),
+// publishes its folder and returns its row; a run that fails is published too, with status
+// "failed" and the message in its row. Throws std::runtime_error only when the folder cannot be
+// written.
+nlohmann::ordered_json run_case(const SweepCase& c, const CaseRunOptions& options,
+                                const std::vector<double>& load_at_S_over_B);
+
+// A published case's record: {"fingerprint": ..., "row": ...}; a null json when there is none.
+// Throws std::runtime_error naming the file when it exists but cannot be read.
+nlohmann::json read_case_record(const std::string& sweep_dir, const std::string& name);
+
+// Of a run that failed, the last part of its record (in S/B) that the row leaves out.
+inline constexpr double failure_approach_S_over_B = 0.02;
+
+// The row of a case from its run's files in `dir`: the load record (load_settlement.csv, or the
+// record up to a failure) and summary.json when the run finished.
+nlohmann::ordered_json case_row(const SweepCase& c, const std::string& dir, const std::string& status,
+                                const std::string& message, const std::vector<double>& load_at_S_over_B);
+
+}  // namespace acst::mpm

@@ -1,0 +1,218 @@
+#include "acst_sweep/sweep_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "acst_common/files.hpp"
+#include "acst_common/json_fields.hpp"
+#include "acst_common/result_folder.hpp"
+#include "acst_footing_tool/first_peak.hpp"
+#include "acst_footing_tool/runner.hpp"
+
+namespace acst::mpm {
+namespace fs = std::filesystem;
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+namespace {
+
+// The columns of acst_mpm's load record that the row needs, in record order.
+struct LoadCurve {
+  std::vector<double> S_over_B, V, H, M, q;
+};
+
+LoadCurve read_load_record(const std::string& path) {
+  LoadCurve c;
+  std::ifstream in(path);
+  if (!in) return c;
+  std::string line;
+  std::vector<std::string> header;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    if (header.empty()) {
+      header = cells;
+      continue;
+    }
+    auto value = [&](const char* name) {
+      const auto it = std::find(header.begin(), header.end(), name);
+      const std::size_t k = static_cast<std::size_t>(it - header.begin());
+      return it == header.end() || k >= cells.size() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(cells[k].c_str(), nullptr);
+    };
+    c.S_over_B.push_back(value("S_over_B"));
+    c.V.push_back(value("V_kN_per_m"));
+    c.H.push_back(value("H_kN_per_m"));
+    c.M.push_back(value("M_kNm_per_m"));
+    c.q.push_back(value("q_kPa"));
+  }
+  return c;
+}
+
+// q at S/B = x by linear interpolation between the record's rows; null past its ends.
+json q_at(const LoadCurve& c, double x) {
+  for (std::size_t i = 1; i < c.S_over_B.size(); ++i) {
+    const double a = c.S_over_B[i - 1], b = c.S_over_B[i];
+    if (x < a || x > b || !(b > a)) continue;
+    const double t = (x - a) / (b - a);
+    return c.q[i - 1] + t * (c.q[i] - c.q[i - 1]);
+  }
+  if (!c.S_over_B.empty() && c.S_over_B.back() == x) return c.q.back();
+  return nullptr;
+}
+
+std::string load_at_column(double s) {
+  return "q_at_S_over_B_" + common::fields::shown(s) + "_kPa";
+}
+
+json read_json_file(const std::string& path) {
+  try {
+    return common::fields::parse(common::read_input_file(path), "", "'" + path + "'");
+  } catch (const common::InputError& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+std::string case_folder(const std::string& sweep_dir, const std::string& name) {
+  return (fs::path(sweep_dir) / sweep_cases_folder / name).string();
+}
+
+std::string case_partial_folder(const std::string& sweep_dir, const std::string& name) {
+  return (fs::path(sweep_dir) / sweep_cases_folder / ("." + name + ".partial")).string();
+}
+
+json case_fingerprint(const SweepCase& c) {
+  json materials = json::object();
+  for (const MaterialSpec& m : c.scene.materials) materials[m.name] = json::parse(m.json_text);
+  return {{"scene", json::parse(c.scene.text)}, {"materials", materials}};
+}
+
+ordered_json case_row(const SweepCase& c, const std::string& dir, const std::string& status, const std::string& message,
+                      const std::vector<double>& load_at_S_over_B) {
+  const Scene& s = c.scene;
+  std::string groups;
+  for (const std::string& g : c.groups) groups += (groups.empty() ? "" : " ") + g;
+  ordered_json row = {{"case", c.name}, {"group", groups}, {"status", status}};
+  for (const auto& item : c.varied.items()) row[item.key()] = item.value();
+  const BodySpec& body = s.bodies.front();
+  for (const MaterialSpec& m : s.materials)
+    if (m.name == body.material) row["material"] = m.source == "inline" ? m.name : fs::path(m.source).stem().string();
+  if (body.relative_density)
+    row["relative_density_pct"] = 100.0 * *body.relative_density;
+  else if (body.void_ratio)
+    row["void_ratio"] = *body.void_ratio;
+  row["bedding_angle_deg"] = body.bedding_angle_deg;
+  if (s.footing) {
+    const FootingSpec& ft = *s.footing;
+    row["inclination_deg"] = ft.inclination_deg;
+    row["B_m"] = ft.width;
+    row["soil_width_m"] = ft.symmetric_half ? 2.0 * (body.x_max - ft.centre_x) : body.x_max - body.x_min;
+    row["half_domain"] = ft.symmetric_half;
+  }
+  row["cell_m"] = s.cell_size;
+  row["particles_per_cell"] = body.particles_per_cell;
+
+  const std::string record = (fs::path(dir) / "load_settlement.csv").string();
+  const std::string failed = (fs::path(dir) / "load_settlement.failed.csv").string();
+  const std::string load_file = fs::exists(record) ? record : failed;
+  LoadCurve curve = read_load_record(load_file);
+  const double end_S_over_B = curve.S_over_B.empty() ? 0.0 : curve.S_over_B.back();
+  // A failed run's last moments (an ejected particle, a material failure) throw the contact load
+  // about by several times: the rows within failure_approach of its end do not count.
+  if (status == "failed") {
+    std::size_t keep = 0;
+    while (keep < curve.S_over_B.size() && curve.S_over_B[keep] <= end_S_over_B - failure_approach_S_over_B) ++keep;
+    for (auto* v : {&curve.S_over_B, &curve.V, &curve.H, &curve.M, &curve.q}) v->resize(keep);
+  }
+  const auto peak = std::max_element(curve.V.begin(), curve.V.end());
+  if (peak != curve.V.end()) {
+    const std::size_t k = static_cast<std::size_t>(peak - curve.V.begin());
+    row["q_ult_kPa"] = curve.q[k];
+    row["S_ult_over_B"] = curve.S_over_B[k];
+    row["H_at_peak_kN_per_m"] = curve.H[k];
+    row["M_at_peak_kNm_per_m"] = curve.M[k];
+    if (const auto f = first_peak(curve.S_over_B, curve.V)) {
+      row["q_first_peak_kPa"] = curve.q[*f];
+      row["S_first_peak_over_B"] = curve.S_over_B[*f];
+    } else {
+      row["q_first_peak_kPa"] = nullptr;  // the load rose to the end of the record
+      row["S_first_peak_over_B"] = nullptr;
+    }
+    for (double x : load_at_S_over_B) row[load_at_column(x)] = q_at(curve, x);
+    row["final_S_over_B"] = end_S_over_B;
+    // acst_mpm's rule (runner.cpp): the load has fallen 2 % below its largest value. A run that
+    // failed after that has a peak that stands (docs/sweeps.md, "Findings").
+    row["peak_reached"] = curve.V.back() < 0.98 * *peak;
+  }
+  const std::string summary_file = (fs::path(dir) / "summary.json").string();
+  if (status == "done" && fs::exists(summary_file)) {
+    const json summary = read_json_file(summary_file);
+    for (const char* when : {"at_peak", "at_end"})
+      if (summary.contains("sides") && summary["sides"].contains(when))
+        for (const auto& item : summary["sides"][when].items()) {
+          const std::string key = item.key(), unit = key.substr(key.rfind('_'));  // "_m2", "_m"
+          row[key.substr(0, key.size() - unit.size()) + "_" + when + unit] = item.value();
+        }
+    for (const char* k : {"quasi_static", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads"})
+      if (summary.contains(k)) row[k] = summary[k];
+  }
+  row["load_file"] = fs::exists(load_file) ? fs::path(load_file).filename().string() : "";
+  row["message"] = message;
+  return row;
+}
+
+ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const std::vector<double>& load_at_S_over_B) {
+  const std::string partial = case_partial_folder(options.sweep_dir, c.name);
+  const std::string checkpoint = (fs::path(partial) / "checkpoint.bin").string();
+  const json fingerprint = case_fingerprint(c);
+  RunOptions run;
+  run.output_dir = partial;
+  run.quiet = true;
+  run.plot = options.plot;
+  // An interrupted run of this very case goes on; anything else there is an earlier case's. The
+  // fingerprint lies beside the folder: acst_mpm starts a new run only in a folder of its own files.
+  const std::string fingerprint_path = partial + ".json";
+  if (fs::exists(checkpoint) && fs::exists(fingerprint_path) && read_json_file(fingerprint_path) == fingerprint)
+    run.resume_from = checkpoint;
+  else
+    fs::remove_all(partial);
+  fs::create_directories(partial);
+  common::write_file_atomically(fingerprint_path, fingerprint.dump() + "\n");
+
+  Scene scene = c.scene;
+  if (options.threads > 0) scene.solver.threads = options.threads;
+  std::string status = "done", message;
+  try {
+    run_scene(scene, run);
+  } catch (const std::exception& e) {
+    status = "failed";
+    message = e.what();
+  }
+  // The run's message names files by where they were written; they are read where they end up.
+  const std::string published = case_folder(options.sweep_dir, c.name);
+  for (std::size_t at = message.find(partial); at != std::string::npos; at = message.find(partial, at + published.size()))
+    message.replace(at, partial.size(), published);
+  ordered_json row = case_row(c, partial, status, message, load_at_S_over_B);
+  row["resumed"] = !run.resume_from.empty();
+  fs::remove(checkpoint);  // a finished case is never resumed; its checkpoint is the largest file
+  const ordered_json record = {{"fingerprint", fingerprint}, {"row", row}};
+  common::write_file_atomically((fs::path(partial) / sweep_case_record).string(), record.dump(2) + "\n");
+  common::publish_folder(partial, published);
+  fs::remove(fingerprint_path);
+  return row;
+}
+
+json read_case_record(const std::string& sweep_dir, const std::string& name) {
+  const std::string path = (fs::path(case_folder(sweep_dir, name)) / sweep_case_record).string();
+  if (!fs::exists(path)) return nullptr;
+  return read_json_file(path);
+}
+
+}  // namespace acst::mpm

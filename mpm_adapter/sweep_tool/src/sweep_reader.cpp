@@ -1,0 +1,301 @@
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "acst_common/files.hpp"
+#include "acst_common/json_fields.hpp"
+#include "acst_common/plain_stem.hpp"
+#include "acst_sweep/sweep.hpp"
+
+namespace acst::mpm {
+
+namespace f = common::fields;
+using nlohmann::json;
+
+namespace {
+
+// A description that expands to more cases than this is a mistake (a product of long lists).
+constexpr std::size_t max_cases = 10000;
+
+// A variable sets one pointer ("path") or several at once ("paths", each value an array with one
+// entry per pointer: a width that moves the footing's centre with it).
+struct Variable {
+  std::string name;
+  std::vector<std::string> pointers;
+  std::vector<json> values;
+  std::vector<std::string> labels;  // what the case's name shows for each value
+};
+
+// How a value shows in a case name: numbers as the shortest text that reads back, plain stems as
+// they are; anything else needs a label.
+std::string label_of(const json& v) {
+  if (v.is_number()) {
+    const double x = v.get<double>();
+    char text[32];
+    if (std::fabs(x) < 1e15 && x == std::round(x)) {
+      std::snprintf(text, sizeof text, "%.0f", x);
+      return text;
+    }
+    for (int digits = 1; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, "%.*g", digits, x);
+      if (std::strtod(text, nullptr) == x) break;
+    }
+    return text;
+  }
+  if (v.is_string() && common::is_plain_stem(v.get<std::string>())) return v.get<std::string>();
+  return "";
+}
+
+Variable read_variable(const json& j, const std::string& p) {
+  f::allow_keys(j, {"name", "path", "paths", "values", "labels"}, p);
+  for (const char* k : {"name", "values"})
+    if (!j.contains(k)) f::fail(p, std::string("'") + k + "' is required");
+  Variable v;
+  v.name = f::string(j["name"], p + "/name");
+  if (!common::is_plain_stem(v.name) || v.name.find('.') != std::string::npos)
+    f::fail(p + "/name", "'" + v.name + "' is not a variable name (letters, digits, '_' and '-')");
+  const bool several = f::one_of(j, {"path", "paths"}, p) == "paths";
+  if (several) {
+    if (!j["paths"].is_array() || j["paths"].empty()) f::fail(p + "/paths", "expected a non-empty array of JSON pointers");
+    for (std::size_t k = 0; k < j["paths"].size(); ++k) v.pointers.push_back(f::string(j["paths"][k], p + "/paths/" + std::to_string(k)));
+  } else {
+    v.pointers.push_back(f::string(j["path"], p + "/path"));
+  }
+  if (!j["values"].is_array() || j["values"].empty()) f::fail(p + "/values", "expected a non-empty array of values");
+  v.values.assign(j["values"].begin(), j["values"].end());
+  for (std::size_t k = 0; several && k < v.values.size(); ++k)
+    if (!v.values[k].is_array() || v.values[k].size() != v.pointers.size())
+      f::fail(p + "/values/" + std::to_string(k), "expected an array of " + std::to_string(v.pointers.size()) + " values, one per path");
+  if (j.contains("labels")) {
+    const json& l = j["labels"];
+    if (!l.is_array() || l.size() != v.values.size())
+      f::fail(p + "/labels", "expected an array of " + std::to_string(v.values.size()) + " labels, one per value");
+    for (std::size_t k = 0; k < l.size(); ++k)
+      v.labels.push_back(common::require_plain_stem(f::string(l[k], p + "/labels/" + std::to_string(k)),
+                                                    p + "/labels/" + std::to_string(k)));
+  } else {
+    for (std::size_t k = 0; k < v.values.size(); ++k) {
+      v.labels.push_back(label_of(several ? v.values[k][0] : v.values[k]));
+      if (v.labels.back().empty())
+        f::fail(p + "/values/" + std::to_string(k), "a value that is not a number or a plain name needs 'labels'");
+    }
+  }
+  return v;
+}
+
+// The case's name: the template with every {variable} replaced by the value's label.
+std::string expand_name(const std::string& pattern, const std::map<std::string, std::string>& labels,
+                        const std::string& p) {
+  std::string name;
+  std::set<std::string> used;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '{') {
+      name += pattern[i];
+      continue;
+    }
+    const std::size_t close = pattern.find('}', i);
+    if (close == std::string::npos) f::fail(p, "'{' without '}' in '" + pattern + "'");
+    const std::string var = pattern.substr(i + 1, close - i - 1);
+    const auto it = labels.find(var);
+    if (it == labels.end()) f::fail(p, "'{" + var + "}' names no variable of this entry's 'vary'");
+    name += it->second;
+    used.insert(var);
+    i = close;
+  }
+  for (const auto& [var, label] : labels)
+    if (!used.count(var)) f::fail(p, "'" + pattern + "' does not show the variable '" + var + "' ({" + var + "}), so its cases would share a name");
+  return common::require_plain_stem(name, p);
+}
+
+// The pointer/value pairs of a "set" object, checked as pointers.
+std::vector<std::pair<std::string, json>> read_set(const json& j, const std::string& p) {
+  f::object(j, p);
+  std::vector<std::pair<std::string, json>> out;
+  for (const auto& item : j.items()) out.emplace_back(item.key(), item.value());
+  return out;
+}
+
+class BaseScenes {
+ public:
+  explicit BaseScenes(std::string dir) : dir_(std::move(dir)) {}
+  // The base scene's JSON and its file (relative names inside it are read from its folder).
+  const std::pair<std::string, json>& get(const json& name, const std::string& p) {
+    const std::string file = common::resolve(dir_, f::string(name, p));
+    auto it = cache_.find(file);
+    if (it != cache_.end()) return it->second;
+    std::string text;
+    try {
+      text = common::read_input_file(file);
+    } catch (const common::InputError& e) {
+      f::fail(p, "cannot read the base scene: " + std::string(e.what()));
+    }
+    json j = f::parse(text, p, "the base scene '" + file + "'");
+    f::object(j, p);
+    return cache_.emplace(file, std::make_pair(file, std::move(j))).first->second;
+  }
+
+ private:
+  std::string dir_;
+  std::map<std::string, std::pair<std::string, json>> cache_;
+};
+
+}  // namespace
+
+void set_at_pointer(json& scene, const std::string& pointer, const json& value, const std::string& where) {
+  json::json_pointer ptr;
+  try {
+    ptr = json::json_pointer(pointer);
+  } catch (const json::exception&) {
+    f::fail(where, "'" + pointer + "' is not a JSON pointer (such as /footing/inclination_deg)");
+  }
+  if (ptr.empty()) f::fail(where, "the pointer '' would replace the whole scene");
+  const json::json_pointer parent = ptr.parent_pointer();
+  if (!scene.contains(parent)) f::fail(where, "'" + pointer + "': the scene has no " + parent.to_string());
+  json& holder = scene.at(parent);
+  const std::string last = ptr.back();
+  if (value.is_null()) {  // null removes the member (as in a JSON merge patch)
+    if (!holder.is_object()) f::fail(where, "'" + pointer + "': null removes a member of an object; " + parent.to_string() + " is not one");
+    holder.erase(last);
+  } else if (holder.is_array()) {
+    std::size_t index = 0;
+    bool digits = !last.empty() && last.size() < 10;
+    for (char ch : last) digits = digits && ch >= '0' && ch <= '9';
+    if (digits) index = std::stoul(last);
+    if (!digits || index >= holder.size())
+      f::fail(where, "'" + pointer + "': " + parent.to_string() + " has elements 0 to " + std::to_string(holder.size() - 1));
+    holder[index] = value;
+  } else if (holder.is_object()) {
+    holder[last] = value;
+  } else {
+    f::fail(where, "'" + pointer + "': " + parent.to_string() + " is a " + holder.type_name() + ", not an object or array");
+  }
+}
+
+SweepSpec parse_sweep(const std::string& json_text, const std::string& file, const std::string& extra_set) {
+  const json j = f::parse(json_text, "", "the sweep description");
+  f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings"}, "");
+  SweepSpec s;
+  s.file = file;
+  s.text = j.dump();
+  s.name = common::require_plain_stem(
+      j.contains("name") ? f::string(j["name"], "/name") : std::filesystem::path(file).stem().string(), "/name");
+  if (j.contains("description")) s.description = f::string(j["description"], "/description");
+  if (j.contains("gather")) {
+    const json& g = j["gather"];
+    f::allow_keys(g, {"load_at_S_over_B", "figures", "case_figures"}, "/gather");
+    if (g.contains("case_figures")) {
+      const json& c = g["case_figures"];
+      if (!c.is_array()) f::fail("/gather/case_figures", "expected an array of file names of a case's folder");
+      for (std::size_t k = 0; k < c.size(); ++k) {
+        const std::string q = "/gather/case_figures/" + std::to_string(k);
+        s.case_figures.push_back(common::require_plain_stem(f::string(c[k], q), q));
+      }
+    }
+    if (g.contains("load_at_S_over_B")) {
+      if (!g["load_at_S_over_B"].is_array()) f::fail("/gather/load_at_S_over_B", "expected an array of S/B values");
+      s.load_at_S_over_B.clear();
+      for (std::size_t k = 0; k < g["load_at_S_over_B"].size(); ++k)
+        s.load_at_S_over_B.push_back(f::number(g["load_at_S_over_B"][k], "/gather/load_at_S_over_B/" + std::to_string(k),
+                                               {0.0, 5.0, true, false}));
+    }
+    if (g.contains("figures")) s.figures = f::boolean(g["figures"], "/gather/figures");
+  }
+  auto common_set = j.contains("set") ? read_set(j["set"], "/set") : std::vector<std::pair<std::string, json>>{};
+  if (!extra_set.empty())
+    for (auto& item : read_set(f::parse(extra_set, "--set", "the value of --set"), "--set")) common_set.push_back(std::move(item));
+  if (!j.contains("cases") || !j["cases"].is_array() || j["cases"].empty())
+    f::fail("/cases", "expected a non-empty array of cases");
+
+  BaseScenes bases(file.empty() ? "" : std::filesystem::path(file).parent_path().string());
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < j["cases"].size(); ++i) {
+    const std::string p = "/cases/" + std::to_string(i);
+    const json& c = j["cases"][i];
+    f::allow_keys(c, {"name", "group", "base", "set", "vary"}, p);
+    if (!c.contains("name")) f::fail(p, "'name' is required");
+    const std::string pattern = f::string(c["name"], p + "/name");
+    std::vector<std::string> groups{"all"};
+    if (c.contains("group")) {
+      const json& g = c["group"];
+      groups.clear();
+      if (g.is_array()) {
+        if (g.empty()) f::fail(p + "/group", "expected a group name or a non-empty array of them");
+        for (std::size_t k = 0; k < g.size(); ++k)
+          groups.push_back(common::require_plain_stem(f::string(g[k], p + "/group/" + std::to_string(k)), p + "/group/" + std::to_string(k)));
+      } else {
+        groups.push_back(common::require_plain_stem(f::string(g, p + "/group"), p + "/group"));
+      }
+    }
+    if (!c.contains("base") && !j.contains("base")) f::fail(p, "'base' is required (here or at the top of the description)");
+    const auto& [base_file, base] = c.contains("base") ? bases.get(c["base"], p + "/base") : bases.get(j["base"], "/base");
+    const auto case_set = c.contains("set") ? read_set(c["set"], p + "/set") : std::vector<std::pair<std::string, json>>{};
+    std::vector<Variable> vars;
+    if (c.contains("vary")) {
+      if (!c["vary"].is_array()) f::fail(p + "/vary", "expected an array of variables");
+      for (std::size_t k = 0; k < c["vary"].size(); ++k) {
+        vars.push_back(read_variable(c["vary"][k], p + "/vary/" + std::to_string(k)));
+        for (std::size_t m = 0; m + 1 < vars.size(); ++m)
+          if (vars[m].name == vars.back().name) f::fail(p + "/vary/" + std::to_string(k) + "/name", "'" + vars.back().name + "' is varied twice");
+      }
+    }
+    std::size_t count = 1;
+    for (const Variable& v : vars) {
+      count *= v.values.size();
+      if (count + s.cases.size() > max_cases) f::fail(p + "/vary", "more than " + std::to_string(max_cases) + " cases");
+    }
+    // Every combination of the variables' values; the last variable changes fastest.
+    for (std::size_t n = 0; n < count; ++n) {
+      json scene = base;
+      for (const auto& [ptr, value] : common_set) set_at_pointer(scene, ptr, value, "/set (or --set)");
+      for (const auto& [ptr, value] : case_set) set_at_pointer(scene, ptr, value, p + "/set");
+      SweepCase sc;
+      sc.groups = groups;
+      sc.origin = p;
+      // The case's pick of each variable's values (mixed radix, the last variable fastest).
+      std::vector<std::size_t> pick(vars.size());
+      for (std::size_t k = vars.size(), rest = n; k-- > 0; rest /= vars[k].values.size()) pick[k] = rest % vars[k].values.size();
+      std::map<std::string, std::string> labels;
+      for (std::size_t k = 0; k < vars.size(); ++k) {
+        const Variable& v = vars[k];
+        for (std::size_t m = 0; m < v.pointers.size(); ++m)
+          set_at_pointer(scene, v.pointers[m], v.pointers.size() > 1 ? v.values[pick[k]][m] : v.values[pick[k]],
+                         p + "/vary/" + std::to_string(k));
+        labels[v.name] = v.labels[pick[k]];
+        sc.varied[v.name] = v.values[pick[k]];
+      }
+      sc.name = expand_name(pattern, labels, p + "/name");
+      if (!names.insert(sc.name).second) f::fail(p + "/name", "a second case named '" + sc.name + "'");
+      scene["name"] = sc.name;
+      try {
+        sc.scene = parse_scene(scene.dump(), base_file);
+      } catch (const common::InputError& e) {
+        f::fail(p, "case '" + sc.name + "': its scene (" + base_file + " with the overrides) is invalid: " + e.what());
+      }
+      s.cases.push_back(std::move(sc));
+    }
+  }
+  if (j.contains("findings")) {
+    std::vector<std::string> case_names;
+    for (const SweepCase& c : s.cases) case_names.push_back(c.name);
+    s.findings = read_findings(j["findings"], "/findings", case_names);
+  }
+  return s;
+}
+
+SweepSpec read_sweep(const std::string& path, const std::string& extra_set) {
+  std::string text;
+  try {
+    text = common::read_input_file(path);
+  } catch (const common::InputError& e) {
+    throw common::InputError(path + ": cannot open the sweep description: " + e.what());
+  }
+  try {
+    return parse_sweep(text, path, extra_set);
+  } catch (const common::InputError& e) {
+    throw common::InputError(path + ": " + e.what());
+  }
+}
+
+}  // namespace acst::mpm

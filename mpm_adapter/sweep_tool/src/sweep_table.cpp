@@ -1,0 +1,214 @@
+#include "acst_sweep/sweep_table.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "acst_common/files.hpp"
+#include "acst_common/gnuplot.hpp"
+#include "acst_common/one_line.hpp"
+#include "acst_sweep/sweep_case.hpp"
+
+namespace acst::mpm {
+namespace fs = std::filesystem;
+using nlohmann::ordered_json;
+
+namespace {
+
+// Every column any row has, in the order they first appear; the message last.
+std::vector<std::string> columns_of(const std::vector<ordered_json>& rows) {
+  std::vector<std::string> cols;
+  std::set<std::string> seen{"message"};
+  for (const ordered_json& r : rows)
+    for (const auto& item : r.items())
+      if (seen.insert(item.key()).second) cols.push_back(item.key());
+  cols.push_back("message");
+  return cols;
+}
+
+std::string csv_cell(const ordered_json& v) {
+  if (v.is_null()) return "";
+  std::string text = v.is_string() ? common::one_line(v.get<std::string>()) : v.dump();
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char ch : text) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
+std::string markdown_cell(const ordered_json& v) {
+  std::string text;
+  if (v.is_null()) return "";
+  if (v.is_number_float()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v.get<double>());
+    text = buf;
+  } else {
+    text = v.is_string() ? common::one_line(v.get<std::string>()) : v.dump();
+  }
+  std::string escaped;
+  for (char ch : text) escaped += ch == '|' ? std::string("\\|") : std::string(1, ch);
+  return escaped;
+}
+
+// The rows as a markdown table, without the file names.
+std::string markdown_table(const std::vector<ordered_json>& rows) {
+  std::vector<std::string> cols;
+  for (const std::string& c : columns_of(rows))
+    if (c != "load_file" && c != "particles") cols.push_back(c);
+  std::string md;
+  for (const std::string& c : cols) md += "| " + c + " ";
+  md += "|\n";
+  for (std::size_t k = 0; k < cols.size(); ++k) md += "|---";
+  md += "|\n";
+  for (const ordered_json& r : rows) {
+    for (const std::string& c : cols) md += "| " + (r.contains(c) ? markdown_cell(r[c]) : "") + " ";
+    md += "|\n";
+  }
+  return md;
+}
+
+}  // namespace
+
+bool is_sweep_output_name(const std::string& name) {
+  static const std::set<std::string> own{sweep_cases_folder, "figures",    "table.csv", "table.md",
+                                         "table.json",       "sweep.json", "report.md"};
+  return own.count(name) > 0 || common::is_temporary_name(name);
+}
+
+void write_sweep_table(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const std::string& dir) {
+  const std::vector<std::string> cols = columns_of(rows);
+  std::string csv = "# acst_sweep table of sweep '" + common::one_line(sweep.name) +
+                    "': one row per case (docs/sweeps.md); q in kPa, H in kN/m, M in kNm/m, wall time in s\n";
+  for (std::size_t k = 0; k < cols.size(); ++k) csv += (k ? "," : "") + cols[k];
+  csv += '\n';
+  for (const ordered_json& r : rows) {
+    for (std::size_t k = 0; k < cols.size(); ++k) csv += (k ? "," : "") + (r.contains(cols[k]) ? csv_cell(r[cols[k]]) : "");
+    csv += '\n';
+  }
+  std::string md = "# Sweep " + common::one_line(sweep.name) + "\n\n";
+  if (!sweep.description.empty()) md += common::one_line(sweep.description) + "\n\n";
+  md += markdown_table(rows);
+  const ordered_json table = {{"sweep", sweep.name}, {"description", sweep.description}, {"cases", rows}};
+  common::write_file_atomically((fs::path(dir) / "table.csv").string(), csv);
+  common::write_file_atomically((fs::path(dir) / "table.md").string(), md);
+  common::write_file_atomically((fs::path(dir) / "table.json").string(), table.dump(2) + "\n");
+}
+
+std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::vector<ordered_json>& rows,
+                                             const std::string& dir) {
+  std::vector<std::string> warnings;
+  std::map<std::string, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < sweep.cases.size(); ++i)
+    for (const std::string& g : sweep.cases[i].groups) groups[g].push_back(i);
+  const fs::path figures = fs::path(dir) / "figures";
+  fs::create_directories(figures);
+  for (const auto& [group, members] : groups) {
+    std::ostringstream plot;
+    std::set<std::string> lab_curves;
+    for (std::size_t i : members) {
+      const std::string load_file = rows[i].value("load_file", "");
+      if (load_file.empty()) continue;
+      const fs::path csv = fs::absolute(fs::path(case_folder(dir, sweep.cases[i].name)) / load_file);
+      plot << (plot.tellp() > 0 ? ", " : "") << common::gp_quoted(csv.string())
+           << " using 'S_over_B':'q_kPa' with lines lw 2 title " << common::gp_quoted(sweep.cases[i].name);
+    }
+    for (std::size_t i : members) {
+      const OutputSpec& o = sweep.cases[i].scene.output;
+      if (o.lab_curve.empty() || !lab_curves.insert(o.lab_curve).second) continue;
+      plot << (plot.tellp() > 0 ? ", " : "") << common::gp_quoted(fs::absolute(o.lab_curve).string())
+           << " using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 title "
+           << common::gp_quoted(o.lab_label.empty() ? "lab data" : o.lab_label);
+    }
+    if (plot.tellp() == 0) continue;
+    std::ostringstream gp;
+    gp << "# gnuplot script written by acst_sweep for group " << group << " of sweep " << sweep.name << "\n"
+       << "set terminal pngcairo size 1100,800 font 'DejaVu Sans,12' noenhanced\n"
+       << "if (!exists('png')) png = " << common::gp_quoted(group + ".png") << "\nset output png\n"
+       << "set datafile separator ','\nset datafile commentschars '#'\nset datafile columnheaders\n"
+       << "set xlabel 'S/B'\nset ylabel 'q = V/B [kPa]'\nset grid\nset key top right\n"
+       << "set title " << common::gp_quoted("Sweep " + sweep.name + ", group " + group) << "\n"
+       << "plot " << plot.str() << "\n";
+    const std::string w = common::run_gnuplot(gp.str(), (figures / (group + ".gp")).string(), (figures / (group + ".png")).string());
+    if (!w.empty()) warnings.push_back("figure of group '" + group + "': " + w);
+  }
+  // The figures of each case the description asks for, beside the group figures.
+  for (const SweepCase& c : sweep.cases)
+    for (const std::string& name : sweep.case_figures) {
+      const fs::path from = fs::path(case_folder(dir, c.name)) / name;
+      if (!fs::exists(from)) continue;
+      fs::create_directories(figures / "cases");
+      std::error_code ec;
+      const fs::path to = figures / "cases" / (c.name + "_" + name), temporary = common::temporary_name(to.string());
+      fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
+      if (!ec) fs::rename(temporary, to, ec);
+      if (ec) warnings.push_back("cannot copy " + from.string() + ": " + ec.message());
+    }
+  return warnings;
+}
+
+void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const std::string& dir,
+                        const std::string& extra_report, const std::string& command) {
+  std::size_t done = 0;
+  for (const ordered_json& r : rows) done += r.value("status", std::string()) == "done";
+  std::set<std::string> groups;
+  for (const SweepCase& c : sweep.cases) groups.insert(c.groups.begin(), c.groups.end());
+  // The same text in both places; only the folder the figure links start from differs.
+  const auto text = [&](const fs::path& report_dir) {
+    const fs::path figures = fs::relative(fs::absolute(fs::path(dir) / "figures"), fs::absolute(report_dir));
+    std::string md = "# " + common::one_line(sweep.name) + "\n\n";
+    if (!sweep.description.empty()) md += common::one_line(sweep.description) + "\n\n";
+    md += "Written by acst_sweep (`docs/sweeps.md`) from `" + common::one_line(sweep.file) + "` with\n\n```\n" +
+          common::one_line(command) + "\n```\n\n" + std::to_string(done) + " of " + std::to_string(rows.size()) +
+          " cases done. Verdicts are judged on the table below by the checks the description states. A check reads the "
+          "cases that ran to their end and those that failed after their peak (the record up to the failure); it is "
+          "open while a case it reads has not (docs/sweeps.md, \"Findings\").\n\n";
+    if (!sweep.findings.empty()) md += "## Findings\n\n";
+    for (std::size_t i = 0; i < sweep.findings.size(); ++i) {
+      const Finding& fd = sweep.findings[i];
+      std::vector<CheckResult> results;
+      for (const FindingCheck& c : fd.checks) results.push_back(judge(c, rows));
+      md += "### " + std::to_string(i + 1) + ". " + common::one_line(fd.claim) + ": **" + verdict(results) + "**\n\n";
+      md += "| check | values | result |\n|---|---|---|\n";
+      for (std::size_t k = 0; k < fd.checks.size(); ++k) {
+        const FindingCheck& c = fd.checks[k];
+        std::string what = c.what;
+        if (what.empty()) {
+          what = c.columns[0] + (c.columns.size() > 1 ? " > " + c.columns[1] : "") + ": " + c.expect;
+        }
+        md += "| " + markdown_cell(what) + " | " + markdown_cell(results[k].numbers) + " | " + results[k].status + " |\n";
+      }
+      md += "\n";
+      if (!fd.note.empty()) md += common::one_line(fd.note) + "\n\n";
+    }
+    md += "## Cases\n\n" + markdown_table(rows) + "\n## Figures\n\n";
+    for (const std::string& g : groups) {
+      if (!fs::exists(fs::path(dir) / "figures" / (g + ".png"))) continue;
+      md += "- " + g + ": ![" + g + "](" + (figures / (g + ".png")).generic_string() + ")\n";
+    }
+    if (!sweep.case_figures.empty()) {
+      md += "\n### Of each case\n\n| case |";
+      for (const std::string& name : sweep.case_figures) md += " " + markdown_cell(name) + " |";
+      md += "\n|---|";
+      for (std::size_t k = 0; k < sweep.case_figures.size(); ++k) md += "---|";
+      md += "\n";
+      for (const SweepCase& c : sweep.cases) {
+        md += "| " + c.name + " |";
+        for (const std::string& name : sweep.case_figures) {
+          const std::string file = c.name + "_" + name;
+          md += fs::exists(fs::path(dir) / "figures" / "cases" / file)
+                    ? " [" + name + "](" + (figures / "cases" / file).generic_string() + ") |"
+                    : " |";
+        }
+        md += "\n";
+      }
+    }
+    return md;
+  };
+  common::write_file_atomically((fs::path(dir) / "report.md").string(), text(dir));
+  if (!extra_report.empty())
+    common::write_file_atomically(extra_report, text(fs::absolute(extra_report).parent_path()));
+}
+
+}  // namespace acst::mpm

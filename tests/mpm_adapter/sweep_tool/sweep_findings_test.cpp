@@ -1,0 +1,104 @@
+// The findings of a sweep (docs/sweeps.md, "Findings"): each kind of check judged on rows whose
+// answer is known, the verdict from its checks, and the description's errors with their path.
+#include <gtest/gtest.h>
+
+#include "acst_common/input_error.hpp"
+#include "acst_sweep/sweep_findings.hpp"
+
+using namespace acst::mpm;
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+namespace {
+
+const std::vector<std::string> names{"a", "b", "c", "d", "e"};
+
+// Cases with q 300, 200, 100; d failed before its peak, e after it; left/right sheared areas; a
+// residual per case.
+std::vector<ordered_json> rows() {
+  return {{{"case", "a"}, {"status", "done"}, {"q", 300.0}, {"left", 2.0}, {"right", 1.0}, {"r", 100.0}},
+          {{"case", "b"}, {"status", "done"}, {"q", 200.0}, {"left", 1.0}, {"right", 3.0}, {"r", 104.0}},
+          {{"case", "c"}, {"status", "done"}, {"q", 100.0}, {"left", 5.0}, {"right", 1.0}, {"r", 96.0}},
+          {{"case", "d"}, {"status", "failed"}, {"q", 50.0}},
+          {{"case", "e"}, {"status", "failed"}, {"q", 40.0}, {"peak_reached", true}, {"final_S_over_B", 0.4}}};
+}
+
+FindingCheck check(const std::string& text) {
+  return read_findings(json::parse(R"([{"finding": "f", "checks": [)" + text + "]}]"), "/findings", names)[0].checks[0];
+}
+
+std::string status(const std::string& text) { return judge(check(text), rows()).status; }
+
+std::string error(const std::string& text) {
+  try {
+    check(text);
+  } catch (const acst::common::InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+}  // namespace
+
+TEST(SweepFindings, EachKindOfCheckIsJudgedOnTheRows) {
+  EXPECT_EQ(status(R"({"expect": "decreasing", "cases": ["a", "b", "c"], "column": "q"})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "increasing", "cases": ["a", "b", "c"], "column": "q"})"), "fails");
+  EXPECT_EQ(status(R"({"expect": "decreasing", "cases": ["a", "c", "b"], "column": "q"})"), "fails");
+  // r spans 96-104: spread 8.3 %.
+  EXPECT_EQ(status(R"({"expect": "similar", "within": 0.09, "cases": ["a", "b", "c"], "column": "r"})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "similar", "within": 0.08, "cases": ["a", "b", "c"], "column": "r"})"), "fails");
+  EXPECT_EQ(status(R"({"expect": "different", "within": 0.08, "cases": ["a", "b", "c"], "column": "r"})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "greater", "cases": ["a", "b"], "column": "q"})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "greater", "cases": ["a", "c"], "columns": ["left", "right"]})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "greater", "cases": ["a", "b"], "columns": ["left", "right"]})"), "fails");
+  EXPECT_EQ(status(R"({"expect": "ratio", "value": 1.5, "within": 0.01, "cases": ["a", "b"], "column": "q"})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "ratio", "value": 1.4, "within": 0.09, "cases": ["a", "b"], "column": "q"})"), "fails");
+  EXPECT_EQ(status(R"({"expect": "near", "value": 310, "within": 0.04, "cases": ["a"], "column": "q"})"), "holds");
+  EXPECT_EQ(status(R"({"expect": "near", "value": 310, "within_abs": 5, "cases": ["a"], "column": "q"})"), "fails");
+  EXPECT_EQ(status(R"({"expect": "report", "cases": ["a", "b"], "column": "q"})"), "reported");
+  // A case that failed before its peak, or a column a row does not have, leaves the check open;
+  // one that failed after its peak counts, and the report says where it failed.
+  EXPECT_EQ(status(R"({"expect": "decreasing", "cases": ["a", "d"], "column": "q"})"), "open");
+  EXPECT_EQ(status(R"({"expect": "decreasing", "cases": ["a", "e"], "column": "q"})"), "holds");
+  EXPECT_NE(judge(check(R"({"expect": "report", "cases": ["e"], "column": "q"})"), rows()).numbers.find("e 40 (failed at S/B 0.4, after its peak)"),
+            std::string::npos);
+  EXPECT_EQ(status(R"({"expect": "report", "cases": ["e"], "column": "r"})"), "open");
+  EXPECT_EQ(status(R"({"expect": "greater", "cases": ["a", "b"], "column": "nothing"})"), "open");
+  const CheckResult r = judge(check(R"({"expect": "ratio", "value": 1.5, "within": 0.01, "cases": ["a", "b"], "column": "q"})"), rows());
+  EXPECT_NE(r.numbers.find("a 300, b 200; ratio 1.5"), std::string::npos) << r.numbers;
+}
+
+TEST(SweepFindings, TheVerdictFollowsItsChecks) {
+  const auto results = [](std::vector<std::string> statuses) {
+    std::vector<CheckResult> out;
+    for (const std::string& s : statuses) out.push_back({s, ""});
+    return out;
+  };
+  EXPECT_EQ(verdict(results({"holds", "holds"})), "reproduced");
+  EXPECT_EQ(verdict(results({"holds", "reported"})), "reproduced");
+  EXPECT_EQ(verdict(results({"fails", "fails"})), "not reproduced");
+  EXPECT_EQ(verdict(results({"holds", "fails"})), "partly reproduced");
+  EXPECT_EQ(verdict(results({"holds", "open"})), "open");
+  EXPECT_EQ(verdict(results({"reported"})), "reported");
+}
+
+TEST(SweepFindings, BadChecksNameTheirPath) {
+  struct Bad {
+    std::string text, says;
+  };
+  const std::vector<Bad> bad{
+      {R"({"expect": "decreasing", "cases": ["a", "z"], "column": "q"})", "/findings/0/checks/0/cases/1: 'z' is not a case"},
+      {R"({"expect": "rising", "cases": ["a"], "column": "q"})", "/findings/0/checks/0/expect"},
+      {R"({"expect": "decreasing", "cases": ["a"], "column": "q"})", "'decreasing' needs two or more cases and one column"},
+      {R"({"expect": "similar", "cases": ["a", "b"], "column": "q"})", "'similar' needs two or more cases, one column and 'within'"},
+      {R"({"expect": "ratio", "value": 1, "cases": ["a", "b"], "column": "q"})", "'ratio' needs"},
+      {R"({"expect": "near", "value": 1, "within": 0.1, "within_abs": 2, "cases": ["a"], "column": "q"})", "one of 'within'"},
+      {R"({"expect": "report", "cases": ["a", "b"], "columns": ["q", "r"]})", "two columns go with 'greater' only"},
+      {R"({"expect": "greater", "cases": ["a", "b"]})", "one of column, columns is required"},
+      {R"({"expect": "greater", "cases": ["a", "b"], "column": "q", "colour": 1})", "/findings/0/checks/0/colour: unknown key"},
+  };
+  for (const Bad& b : bad) {
+    const std::string message = error(b.text);
+    EXPECT_NE(message.find(b.says), std::string::npos) << b.text << "\n" << message;
+  }
+}
