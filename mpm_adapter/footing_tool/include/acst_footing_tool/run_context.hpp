@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "acst_footing_tool/records.hpp"
-#include "acst_footing_tool/runner.hpp"
+#include "acst_footing_tool/run_options.hpp"
 #include "acst_footing_tool/scene.hpp"
 #include "acst_mpm/simulation.hpp"
 
