@@ -9,6 +9,7 @@
 #include "acst/dilatancy.hpp"
 #include "acst/elasticity.hpp"
 #include "acst/fabric.hpp"
+#include "acst/inline.hpp"
 #include "acst/integration/report.hpp"
 #include "acst/loading_index.hpp"
 #include "acst/parameters.hpp"
@@ -43,13 +44,12 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   q.psi = state_parameter(prm, e, q.p);
   q.A = fabric_anisotropy_variable(F, q.ratio.n);
   q.zeta = dilatancy_state_parameter(q.psi, prm.e_A, q.A);
-  const double R = std::max(q.ratio.R, prm.R_tolerance);
   q.D = dilatancy(prm.d1, prm.m, q.zeta, q.ratio.R, prm.Mc, g);
-  const double h = hardening_coefficient(prm.h1, prm.h2, e);
-  q.h_floored = h < prm.h_min;
-  q.h = q.h_floored ? prm.h_min : h;
-  const double n = peak_state_coefficient(prm.n, prm.peak_pressure_exponent, q.p, prm.p_min, atmospheric_pressure);
-  q.Kp = plastic_modulus(q.moduli.G, q.h, prm.Mc, g, n, q.zeta, R);
+  const FlooredHardening h = floored_hardening_coefficient(prm.h1, prm.h2, prm.h_min, e);
+  q.h = h.h;
+  q.h_floored = h.floored;
+  const double n = peak_state_coefficient(prm.n, prm.peak_pressure_exponent, normalised_pressure(q.p, prm.p_min));
+  q.Kp = plastic_modulus(q.moduli.G, q.h, prm.Mc, g, n, q.zeta, plastic_modulus_stress_ratio(q.ratio.R, prm.R_tolerance));
   q.n_r = contract(q.ratio.n, q.ratio.r);
   return q;
 }
@@ -59,17 +59,60 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, lode_shape(prm), prm.R_tolerance, strain_direction));
 }
 
-// D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I), isotropic 2G n + sqrt(2/3) K D I: the stress
-// relaxed per unit loading index
-// (n is deviatoric, so the deviatoric and volumetric parts separate without a deviator call.)
-inline Sym plastic_stress_direction(const PlasticQuantities& q) {
-  if (q.moduli.anisotropic) return elastic_stress_increment(q.moduli, plastic_flow_direction(q.ratio.n, q.D));
-  Sym a = 2.0 * q.moduli.G * q.ratio.n;
-  const double volumetric = std::sqrt(2.0 / 3.0) * q.moduli.K * q.D;
+// The isotropic D_e : d eps^p / L = 2G n + sqrt(2/3) K D I, into a (n is deviatoric, so the
+// deviatoric and volumetric parts separate without a deviator call).
+ACST_INLINE void isotropic_plastic_stress_direction(double G, double K, double D, const double* n, double* a) {
+#pragma GCC unroll 13
+  for (int i = 0; i < 6; ++i) a[i] = 2.0 * G * n[i];
+  const double volumetric = std::sqrt(2.0 / 3.0) * K * D;
   a[0] += volumetric;
   a[1] += volumetric;
   a[2] += volumetric;
+}
+
+// D_e : d eps^p / L = D_e : (n + sqrt(2/27) D I): the stress relaxed per unit loading index.
+inline Sym plastic_stress_direction(const PlasticQuantities& q) {
+  if (q.moduli.anisotropic) return elastic_stress_increment(q.moduli, plastic_flow_direction(q.ratio.n, q.D));
+  Sym a;
+  isotropic_plastic_stress_direction(q.moduli.G, q.moduli.K, q.D, q.ratio.n.data(), a.data());
   return a;
+}
+
+// de = -(1 + e) d eps_v.
+ACST_INLINE double void_ratio_rate(double e, const double* deps) { return -(1.0 + e) * trace(deps); }
+
+// The rate of y = (stress, fabric, void ratio) with isotropic D_e and no plastic strain (the
+// published model: no fabric read, no P built), into dy.
+ACST_INLINE void isotropic_elastic_rate(double G0, double p_min, double nu, const double* y, const double* deps,
+                                        double* dy) {
+  const double e = y[12];
+  const double G = shear_modulus(G0, p_min, e, mean_stress(y));
+  isotropic_stress_increment(G, bulk_modulus(G, nu), deps, dy);
+#pragma GCC unroll 13
+  for (int i = 6; i < 12; ++i) dy[i] = 0.0;
+  dy[12] = void_ratio_rate(e, deps);
+}
+
+// d sigma = D_e d eps - <L> D_e:(n + sqrt(2/27) D I), dF = <L> k_f (n - F), de = -(1 + e) d eps_v
+// into dy, from D_e d eps, <L> and D_e:(n + sqrt(2/27) D I) (`elastic`, `load`, `relaxed`).
+ACST_INLINE void plastic_rate_of(const double* elastic, double load, const double* relaxed, double k_f, const double* n,
+                                 const double* F, double e, const double* deps, double* dy) {
+  double dF[6];
+  fabric_rate(k_f, n, F, dF);
+#pragma GCC unroll 13
+  for (int i = 0; i < 6; ++i) {
+    dy[i] = elastic[i] - load * relaxed[i];
+    dy[6 + i] = load * dF[i];
+  }
+  dy[12] = void_ratio_rate(e, deps);
+}
+
+// max(|d sigma_err| / |sigma|, |dF_err| / max(|F|, 0.01), |de_err| / (1 + e)) of y's 13 numbers.
+ACST_INLINE double relative_error(double p_min, const double* y_new, const double* err) {
+  const double es = norm(err) / max_of(norm(y_new), p_min);
+  const double ef = norm(err + 6) / max_of(norm(y_new + 6), 1e-2);
+  const double ee = std::abs(err[12]) / (1.0 + y_new[12]);
+  return max_of(es, max_of(ef, ee));
 }
 
 class AcstRates {
@@ -88,16 +131,14 @@ class AcstRates {
 
   void elastic_rate(const Vector& y, const Sym& deps, Vector& dy, Counters& c) const {
     ++c.rate_evaluations;
-    const double e = void_ratio(y);
-    const double p = mean_stress(stress(y));
-    if (prm_.elastic_anisotropy == 0.0) {  // the published model: no fabric read, no P built
-      const double G = shear_modulus(prm_, e, p);
-      dy.template head<6>() = isotropic_stress_increment(G, bulk_modulus(G, prm_.nu), deps);
-    } else {
-      dy.template head<6>() = elastic_stress_increment(elastic_moduli(prm_, e, p, fabric(y)), deps);
+    if (prm_.elastic_anisotropy == 0.0) {
+      isotropic_elastic_rate(prm_.G0, prm_.p_min, prm_.nu, y.data(), deps.data(), dy.data());
+      return;
     }
+    const double e = void_ratio(y);
+    dy.template head<6>() = elastic_stress_increment(elastic_moduli(prm_, e, mean_stress(stress(y)), fabric(y)), deps);
     dy.template segment<6>(6).setZero();
-    dy[12] = -(1.0 + e) * trace(deps);  // de = -(1 + e) d eps_v
+    dy[12] = void_ratio_rate(e, deps.data());
   }
 
   // d sigma = D_e d eps - <L> D_e:(n + sqrt(2/27) D I);  dF = <L> k_f (n - F).
@@ -116,12 +157,9 @@ class AcstRates {
       ++c.guard_uniqueness;
       return Reason::loss_of_uniqueness;
     }
-    const double load = L.numerator > 0.0 ? L.numerator / L.denominator : 0.0;
-    Sym dsig = elastic_stress_increment(q.moduli, deps);
-    dsig -= load * plastic_stress_direction(q);
-    dy.template head<6>() = dsig;
-    dy.template segment<6>(6) = load * fabric_rate(prm_.k_f, q.ratio.n, F);
-    dy[12] = -(1.0 + e) * trace(deps);
+    const Sym elastic = elastic_stress_increment(q.moduli, deps), relaxed = plastic_stress_direction(q);
+    plastic_rate_of(elastic.data(), loading_index(L), relaxed.data(), prm_.k_f, q.ratio.n.data(), F.data(), e, deps.data(),
+                    dy.data());
     return Reason::none;
   }
 
@@ -135,18 +173,12 @@ class AcstRates {
     const Sym sigma = stress(y);
     const StressRatioState& ratio = ratio_state(sigma, deps);
     if (ratio.small_R) return 0.0;
-    const Sym grad = yield_gradient(ratio, mean_stress(sigma));
-    const Sym dsig = elastic_dy.template head<6>();
-    const double den = norm(grad) * norm(dsig);
-    return den > 0.0 ? contract(grad, dsig) / den : 0.0;
+    return cosine_between(yield_gradient(ratio, mean_stress(sigma)).data(), elastic_dy.data());
   }
 
-  // max(|d sigma_err| / |sigma|, |dF_err| / max(|F|, 0.01), |de_err| / (1 + e)).
+  // The error norm of a substep (acst::relative_error).
   double relative_error(const Vector& y_new, const Vector& err) const {
-    const double es = norm(stress(err)) / std::max(norm(stress(y_new)), prm_.p_min);
-    const double ef = norm(fabric(err)) / std::max(norm(fabric(y_new)), 1e-2);
-    const double ee = std::abs(err[12]) / (1.0 + y_new[12]);
-    return std::max(es, std::max(ef, ee));
+    return acst::relative_error(prm_.p_min, y_new.data(), err.data());
   }
 
   // H = R/g(theta): exact drift correction after a plastic substep.

@@ -2,9 +2,9 @@
 // Pressure-dependent hypoelasticity, isotropic or cross-anisotropic from the fabric
 // (docs/model.md section 2).
 #include <Eigen/Core>
-#include <algorithm>
 #include <cmath>
 
+#include "acst/inline.hpp"
 #include "acst/parameters.hpp"
 #include "acst/tensor.hpp"
 
@@ -22,14 +22,16 @@ struct ElasticModuli {
 };
 
 // G = G0 pa (2.97 - e)^2 / (1 + e) sqrt(p/pa), evaluated at max(p, p_min) (2.97: void_ratio_limit).
-inline double shear_modulus(const Parameters& prm, double e, double p) {
+ACST_INLINE double shear_modulus(double G0, double p_min, double e, double p) {
   const double pa = atmospheric_pressure;
   const double d = void_ratio_limit - e;
-  return prm.G0 * pa * d * d / (1.0 + e) * std::sqrt(std::max(p, prm.p_min) / pa);
+  return G0 * pa * d * d / (1.0 + e) * std::sqrt(normalised_pressure(p, p_min));
 }
 
+inline double shear_modulus(const Parameters& prm, double e, double p) { return shear_modulus(prm.G0, prm.p_min, e, p); }
+
 // K = G 2(1 + nu) / (3(1 - 2nu)).
-inline double bulk_modulus(double G, double nu) { return G * 2.0 * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu)); }
+ACST_INLINE double bulk_modulus(double G, double nu) { return G * 2.0 * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu)); }
 
 // P = exp(a sqrt(6)/12 F). For a fabric F = |F| (3 b b^T - I)/sqrt(6) the stiffness is Graham &
 // Houlsby's (1983) cross-anisotropy about b, with Young's modulus along b exp(a |F|) times the
@@ -57,13 +59,20 @@ inline ElasticModuli isotropic_elastic_moduli(const Parameters& prm, double e, d
   return {G, bulk_modulus(G, prm.nu)};
 }
 
-// d sigma = 2G de_dev + K d eps_v I.
-inline Sym isotropic_stress_increment(double G, double K, const Sym& deps) {
+// d sigma = 2G de_dev + K d eps_v I, into ds.
+ACST_INLINE void isotropic_stress_increment(double G, double K, const double* deps, double* ds) {
   const double dev_v = trace(deps);
-  Sym ds = 2.0 * G * deviator(deps);
+  deviator(deps, ds);
+#pragma GCC unroll 13
+  for (int i = 0; i < 6; ++i) ds[i] = 2.0 * G * ds[i];
   ds[0] += K * dev_v;
   ds[1] += K * dev_v;
   ds[2] += K * dev_v;
+}
+
+inline Sym isotropic_stress_increment(double G, double K, const Sym& deps) {
+  Sym ds;
+  isotropic_stress_increment(G, K, deps.data(), ds.data());
   return ds;
 }
 

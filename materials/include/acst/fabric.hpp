@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "acst/inline.hpp"
 #include "acst/tensor.hpp"
 
 namespace acst {
@@ -31,12 +32,23 @@ inline Eigen::Vector3d bedding_direction(double alpha_degrees, int major_axis, i
 }
 
 // A = F:n, the fabric anisotropy variable.
-inline double fabric_anisotropy_variable(const Sym& F, const Sym& n) { return contract(F, n); }
+ACST_INLINE double fabric_anisotropy_variable(const double* F, const double* n) { return contract(F, n); }
+
+inline double fabric_anisotropy_variable(const Sym& F, const Sym& n) { return fabric_anisotropy_variable(F.data(), n.data()); }
 
 // zeta = psi - e_A (A - 1), the dilatancy state parameter.
-inline double dilatancy_state_parameter(double psi, double e_A, double A) { return psi - e_A * (A - 1.0); }
+ACST_INLINE double dilatancy_state_parameter(double psi, double e_A, double A) { return psi - e_A * (A - 1.0); }
 
-// dF = L k_f (n - F) per unit loading index L (> 0).
-inline Sym fabric_rate(double k_f, const Sym& n, const Sym& F) { return k_f * (n - F); }
+// dF = L k_f (n - F) per unit loading index L (> 0), into dF.
+ACST_INLINE void fabric_rate(double k_f, const double* n, const double* F, double* dF) {
+#pragma GCC unroll 13
+  for (int i = 0; i < 6; ++i) dF[i] = k_f * (n[i] - F[i]);
+}
+
+inline Sym fabric_rate(double k_f, const Sym& n, const Sym& F) {
+  Sym dF;
+  fabric_rate(k_f, n.data(), F.data(), dF.data());
+  return dF;
+}
 
 }  // namespace acst

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "acst/inline.hpp"
 #include "acst/lode.hpp"
 #include "acst_common/input_error.hpp"
 
@@ -13,11 +14,15 @@ namespace acst {
 // Atmospheric pressure used to normalise p in the elastic and critical-state laws.
 inline constexpr double atmospheric_pressure = 101.0;
 
+// p/pa with p floored at p_floor: p_min for the moduli and the peak state, 0 for the critical
+// state line.
+ACST_INLINE double normalised_pressure(double p, double p_floor) { return max_of(p, p_floor) / atmospheric_pressure; }
+
 // The void ratios a state may have: e > 0, and e below 2.97, where the shear modulus's
 // (2.97 - e)^2 (elasticity.hpp) vanishes and would grow again. One check for every entry point
 // (initial states, states handed to an update, states an update returns).
 inline constexpr double void_ratio_limit = 2.97;
-inline bool void_ratio_admissible(double e) { return e > 0.0 && e < void_ratio_limit; }
+ACST_INLINE bool void_ratio_admissible(double e) { return e > 0.0 && e < void_ratio_limit; }
 
 enum class Variant { anisotropic, isotropic };
 

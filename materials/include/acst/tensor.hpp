@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "acst/inline.hpp"
+
 namespace acst {
 
 using Sym = Eigen::Matrix<double, 6, 1>;
@@ -16,38 +18,72 @@ using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 inline Sym identity_tensor() { return (Sym() << 1, 1, 1, 0, 0, 0).finished(); }
 
-inline double trace(const Sym& a) { return a[0] + a[1] + a[2]; }
+// The tensor algebra on six numbers in Voigt order, the forms the lanes' kernel shares
+// (acst/inline.hpp); the Sym forms below call them.
+ACST_INLINE double trace(const double* a) { return a[0] + a[1] + a[2]; }
 
-inline Sym deviator(const Sym& a) {
-  Sym d = a;
+// d = dev(a); d may be a.
+ACST_INLINE void deviator(const double* a, double* d) {
   const double m = trace(a) / 3.0;
-  d[0] -= m;
-  d[1] -= m;
-  d[2] -= m;
-  return d;
+  d[0] = a[0] - m;
+  d[1] = a[1] - m;
+  d[2] = a[2] - m;
+  d[3] = a[3];
+  d[4] = a[4];
+  d[5] = a[5];
 }
 
 // a:b, the double contraction of two symmetric tensors.
-inline double contract(const Sym& a, const Sym& b) {
+ACST_INLINE double contract(const double* a, const double* b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
 }
 
-inline double norm(const Sym& a) { return std::sqrt(contract(a, a)); }
+ACST_INLINE double norm(const double* a) { return std::sqrt(contract(a, a)); }
 
-inline double determinant(const Sym& a) {
+ACST_INLINE double determinant(const double* a) {
   return a[0] * (a[1] * a[2] - a[5] * a[5]) - a[3] * (a[3] * a[2] - a[5] * a[4]) +
          a[4] * (a[3] * a[5] - a[1] * a[4]);
 }
 
-// a.a (matrix square of a symmetric tensor), again symmetric.
-inline Sym square(const Sym& a) {
-  Sym s;
+// s = a.a (matrix square of a symmetric tensor), again symmetric; s may not be a.
+ACST_INLINE void square(const double* a, double* s) {
   s[0] = a[0] * a[0] + a[3] * a[3] + a[4] * a[4];
   s[1] = a[3] * a[3] + a[1] * a[1] + a[5] * a[5];
   s[2] = a[4] * a[4] + a[5] * a[5] + a[2] * a[2];
   s[3] = a[0] * a[3] + a[3] * a[1] + a[4] * a[5];
   s[4] = a[0] * a[4] + a[3] * a[5] + a[4] * a[2];
   s[5] = a[3] * a[4] + a[1] * a[5] + a[5] * a[2];
+}
+
+// out = a s, component by component; out may be a.
+ACST_INLINE void scaled(const double* a, double s, double* out) {
+#pragma GCC unroll 13
+  for (int i = 0; i < 6; ++i) out[i] = a[i] * s;
+}
+
+// The cosine of the angle between a and b, a:b / (|a| |b|); 0 where either is zero.
+ACST_INLINE double cosine_between(const double* a, const double* b) {
+  const double den = norm(a) * norm(b);
+  return den > 0.0 ? contract(a, b) / den : 0.0;
+}
+
+inline double trace(const Sym& a) { return trace(a.data()); }
+
+inline Sym deviator(const Sym& a) {
+  Sym d;
+  deviator(a.data(), d.data());
+  return d;
+}
+
+inline double contract(const Sym& a, const Sym& b) { return contract(a.data(), b.data()); }
+
+inline double norm(const Sym& a) { return norm(a.data()); }
+
+inline double determinant(const Sym& a) { return determinant(a.data()); }
+
+inline Sym square(const Sym& a) {
+  Sym s;
+  square(a.data(), s.data());
   return s;
 }
 
