@@ -18,11 +18,10 @@ ContactForce Footing::contact(const ContactParticle& p, double& friction, double
   // The face that pushes: the base for a centre under the base; otherwise the face the domain
   // penetrates least, as a signed distance to the outline gives (where that choice changes, both
   // faces' penetrations are equal, so the overlap does not jump). Inside the outline this is the
-  // base under the middle and a side near it: heaved soil that a side let in, pushed down
-  // instead, counted its height above the base as penetration and was thrown off the grid. Beside
-  // the footing it is the side, except for a domain flattened at the corner: a rule that switched
-  // it to the side as the base passed its centre turned a 4 mm overlap into 48 mm in one step
-  // (issue 11, the slow Kimura runs).
+  // base under the middle and a side near it (heaved soil a side let in goes back out, instead of
+  // down with its height above the base counted as penetration); beside the footing it is the
+  // side, except for a domain flattened at the corner, which the base overlaps less. Rules that
+  // let the overlap jump threw particles off the grid (docs/footing-study.md, "Which face pushes").
   const double d_base = y1 - base, d_left = x1 - left, d_right = right - x0;
   const bool under = p.x >= left && p.x <= right;
   const bool base_face = (under && p.y < base) || d_base <= std::min(d_left, d_right);

@@ -28,8 +28,8 @@ struct B2gimpDomain {
   double l, inv_l, l2_third, l2_sixth, half_inv_l, quarter_inv_l, inv_l_twelfth;
 };
 
-// 1-D weight S(xi) and slope dS/dxi together, in one pass over the ranges (docs/mpm.md, section
-// "Shape functions"; mpm-core design note table). One function for both keeps the ranges
+// 1-D weight S(xi) and slope dS/dxi together, in one pass over the ranges (docs/mpm.md, "One
+// step", phase 1; mpm-core design note table). One function for both keeps the ranges
 // written once; the particle loops call it 8 times per particle and step.
 struct B2gimpValue {
   double w, dw;
