@@ -46,9 +46,9 @@ bool physical(const State& s) {
 
 }  // namespace
 
-Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const {
+Report Material::update(State& state, const Sym& deps, Mat6* tangent_out, double void_ratio_offset) const {
   Report rep;
-  if (!deps.allFinite()) {
+  if (!deps.allFinite() || !(std::abs(void_ratio_offset) < void_ratio_limit)) {
     rep.status = Status::invalid_input;
     rep.reason = integration::Reason::non_finite;
     return rep;
@@ -58,7 +58,7 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
     rep.reason = integration::Reason::non_finite;
     return rep;
   }
-  const AcstRates model(parameters_);
+  const AcstRates model(parameters_, void_ratio_offset);
   AcstRates::Vector y = pack(state);
   // A hint that is no step size (NaN, zero, negative: a host's made-up state) means "none": the
   // update may end without a substep that rewrites it (a reset to the pressure floor), and OK
@@ -76,7 +76,7 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
   // OK promises a finite, physical state and tangent (docs/c-abi.md): anything else asks for a
   // smaller increment and leaves the state as it came.
   Mat6 D;
-  if (tangent_out) D = tangent(next, rep.plastic, deps);
+  if (tangent_out) D = tangent(next, rep.plastic, deps, void_ratio_offset);
   if (!physical(next) || (tangent_out && !D.allFinite())) {
     rep.status = Status::step_reduction_requested;
     rep.reason = integration::Reason::non_finite;  // the integrator already held e and p in range
@@ -90,8 +90,9 @@ Report Material::update(State& state, const Sym& deps, Mat6* tangent_out) const 
 
 // D_ep = D_e - (D_e : m) (x) (D_e : g) / [Kp + (D_e : g):m] (docs/model.md sections 6 and 7; with
 // isotropic D_e, (2G n + sqrt(2/3) K D I) (x) (2G n - K (n:r) I) / [Kp + 2G - sqrt(2/3) K D (n:r)]).
-Mat6 Material::tangent(const State& s, bool plastic, const Sym& strain_direction) const {
-  const PlasticQuantities q = plastic_quantities(parameters_, s.stress, s.fabric, s.void_ratio, strain_direction);
+Mat6 Material::tangent(const State& s, bool plastic, const Sym& strain_direction, double void_ratio_offset) const {
+  const PlasticQuantities q =
+      plastic_quantities(parameters_, s.stress, s.fabric, s.void_ratio, strain_direction, void_ratio_offset);
   Mat6 D = elastic_stiffness(q.moduli);
   if (!plastic) return D;
   const LoadingIndexTerms L = loading_index_terms(q.moduli, q.Kp, q.D, q.ratio.n, q.n_r, strain_direction);

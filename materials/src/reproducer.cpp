@@ -37,7 +37,7 @@ json material_document(const Material& material) {
 }
 
 json update_reproducer(const Material& material, const State& start, const Sym& strain_increment,
-                       const std::string& description) {
+                       const std::string& description, double void_ratio_offset) {
   json rows = json::array();
   for (int i = 0; i < 6; ++i) {
     json strain = json::array();
@@ -46,14 +46,15 @@ json update_reproducer(const Material& material, const State& start, const Sym& 
                     {"strain_pct", strain},
                     {"change", units::strain_to_scene(strain_increment[i], i)}});
   }
+  json initial = {{"stress", six(start.stress)},
+                  {"void_ratio", start.void_ratio},
+                  {"fabric", six(start.fabric)},
+                  {"H", start.H},
+                  {"substep_hint", start.substep_hint}};
+  if (void_ratio_offset != 0.0) initial["void_ratio_offset"] = void_ratio_offset;
   return {{"description", description},
           {"material", material_document(material)},
-          {"initial_state",
-           {{"stress", six(start.stress)},
-            {"void_ratio", start.void_ratio},
-            {"fabric", six(start.fabric)},
-            {"H", start.H},
-            {"substep_hint", start.substep_hint}}},
+          {"initial_state", initial},
           {"steps", json::array({{{"constraints", rows}, {"increments", 1}}})},
           {"solver", {{"max_halvings", 0}}},
           {"output", {{"name", "reproducer"}, {"plot", false}}}};

@@ -20,7 +20,7 @@ lanes::Constants constants_of(const Material& material) {
 }  // namespace
 #endif
 
-void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_increment) {
+void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_increment, double void_ratio_offset) {
   for (int i = 0; i < 6; ++i) {
     lanes.stress[i][l] = state.stress[i];
     lanes.fabric[i][l] = state.fabric[i];
@@ -29,6 +29,7 @@ void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_i
   lanes.void_ratio[l] = state.void_ratio;
   lanes.H[l] = state.H;
   lanes.substep_hint[l] = state.substep_hint;
+  lanes.void_ratio_offset[l] = void_ratio_offset;
 }
 
 void take_lane(const UpdateLanes& lanes, int l, State& state) {
@@ -63,6 +64,7 @@ void update_lanes(const Material& material, UpdateLanes& lanes, LaneBuild build)
       lanes.strain_increment[i][l] = lanes.strain_increment[i][0];
     }
     lanes.void_ratio[l] = lanes.void_ratio[0];
+    lanes.void_ratio_offset[l] = lanes.void_ratio_offset[0];
     lanes.H[l] = lanes.H[0];
     lanes.substep_hint[l] = lanes.substep_hint[0];
   }

@@ -128,13 +128,15 @@ ACST_INLINE void quantities_before_pow(const Constants& k, const double* y, cons
 // plastic_quantities' pow and exp calls, one per lane (zeta and n with them).
 // Lanes off the plastic route (`active` 0) skip the calls: a fifth of a footing's updates are
 // elastic.
-void transcendental(const Constants& k, const double (&e)[W], const int (&active)[W], Stage& st) {
+void transcendental(const Constants& k, const double (&e)[W], const double (&offset)[W], const int (&active)[W],
+                    Stage& st) {
   for (int l = 0; l < W; ++l) {
     if (!active[l]) {
       st.exp_m_zeta[l] = st.exp_n_zeta[l] = 0.0;
       continue;
     }
-    const double psi = state_parameter(e[l], critical_void_ratio(k.e_Gamma, k.lambda_c, k.xi, st.pressure_ratio[l]));
+    const double e_c = critical_void_ratio(k.e_Gamma, k.lambda_c, k.xi, st.pressure_ratio[l]);
+    const double psi = state_parameter(e[l] + offset[l], e_c);
     const double zeta = dilatancy_state_parameter(psi, k.e_A, st.A[l]);
     st.exp_m_zeta[l] = dilatancy_exponential(k.m, zeta);
     st.exp_n_zeta[l] = peak_exponential(peak_state_coefficient(k.n, k.beta, st.peak_pressure_ratio[l]), zeta);
@@ -195,7 +197,7 @@ void run(const Constants& k, UpdateLanes& L) {
     for (int i = 0; i < 13; ++i) entry = entry & finite(y.v[i]);
     #pragma GCC unroll 13
     for (int i = 0; i < 6; ++i) entry = entry & finite(deps[i]);
-    entry = entry & void_ratio_admissible(y.v[12]);
+    entry = entry & void_ratio_admissible(y.v[12]) & (std::abs(L.void_ratio_offset[l]) < void_ratio_limit);
     // Material::update takes a hint that is no step size as 1, and a hint of 1 or more
     // starts with the whole increment (the substep is clamped to 1).
     const double hint = L.substep_hint[l];
@@ -249,7 +251,7 @@ void run(const Constants& k, UpdateLanes& L) {
     }
     return;
   }
-  transcendental(k, L.void_ratio, ok, start);
+  transcendental(k, L.void_ratio, L.void_ratio_offset, ok, start);
   double ys_e[W];
   // The first rate; the second stage's state y + k0 and its rate up to the pow.
   for (int l = 0; l < W; ++l) {
@@ -269,7 +271,7 @@ void run(const Constants& k, UpdateLanes& L) {
     ys_e[l] = ys.v[12];
     ok[l] = ok[l] & !unusable;
   }
-  transcendental(k, ys_e, ok, end);
+  transcendental(k, ys_e, L.void_ratio_offset, ok, end);
   // The second rate, the step and its error, the checks and the drift-free H.
   for (int l = 0; l < W; ++l) {
     const Vec y = load(L.stress, L.fabric, L.void_ratio, l);

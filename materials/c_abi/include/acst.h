@@ -167,6 +167,37 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
                                       int* point_status, acst_counters* point_counters, const acst_model* model,
                                       size_t n, const double* rotation, const double* dstrain);
 
+/* NONLOCAL REGULARISATION (docs/c-abi.md, "Nonlocal regularisation"). A softening sand
+ * localises in bands as thin as a host's discretisation allows, so the answer of a boundary-value
+ * problem moves with the mesh. A host that regularises it averages each point's local quantities
+ * over a neighbourhood of an internal length of its own choosing and hands every point the
+ * offsets "averaged minus its own" at the start of the increment; the model takes the averaged
+ * quantities where its softening comes from and keeps stress, strain and all else local.
+ *   ACST, isotropic: one quantity, "void_ratio": the state parameter psi = e - e_c(p), which sets
+ *       the dilatancy and the peak, takes e + offset over the increment (e evolving with the
+ *       increment's own volume change); the elasticity and the hardening keep e.
+ *   linear_elastic, von_mises: none (nothing softens); an offset argument is ignored.
+ * acst_nonlocal_size: the number of quantities (0 or 1; 0 for a NULL handle); acst_nonlocal_name
+ * their names (NULL out of range); acst_nonlocal_local: a point's local values (acst_nonlocal_size
+ * doubles) from its stress and state, which must be finite. */
+int acst_nonlocal_size(const acst_model* model);
+const char* acst_nonlocal_name(const acst_model* model, int i);
+acst_status acst_nonlocal_local(double* local, const acst_model* model, const double* stress, const double* statev);
+
+/* acst_update, acst_update_rotated and acst_update_rotated_batch with each point's offsets:
+ * acst_nonlocal_size doubles a point (point i's at offset + i acst_nonlocal_size in the batch),
+ * each finite and smaller than 2.97 in size (else ACST_INVALID_INPUT). offset NULL, or offsets of
+ * zero, give the local functions' numbers to the last bit; everything else is as there. */
+acst_status acst_update_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                 const acst_model* model, const double* dstrain, const double* offset);
+acst_status acst_update_rotated_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                         const acst_model* model, const double* rotation, const double* dstrain,
+                                         const double* offset);
+acst_status acst_update_rotated_batch_nonlocal(double* stress, size_t stress_stride, double* statev,
+                                               size_t statev_stride, int* point_status, acst_counters* point_counters,
+                                               const acst_model* model, size_t n, const double* rotation,
+                                               const double* dstrain, const double* offset);
+
 /* Reproducers: the element-test scene (JSON text, docs/element-tests.md) that replays one
  * update with `acst_element FILE`: the material written out in full, the whole state, the
  * strain increment as six strain-controlled rows of one increment. Write it for an update that
@@ -177,6 +208,11 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
  * a buffer too small gives ACST_INVALID_INPUT and nothing is written. */
 acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* model, const double* stress,
                             const double* statev, const double* dstrain);
+
+/* acst_reproducer of a nonlocal update (acst_update_nonlocal's offset, or NULL): the scene holds
+ * the offset in its initial state, which acst_element applies to every increment. */
+acst_status acst_reproducer_nonlocal(char* buffer, size_t* length, const acst_model* model, const double* stress,
+                                     const double* statev, const double* dstrain, const double* offset);
 
 /* The same for a umat_ host, from exactly what umat_ receives (NTENS 6 or 4, PROPS as for
  * umat_, DROT may be NULL): the fabric turned as umat_ turns it, so the scene replays what

@@ -54,6 +54,16 @@ bool proper_rotation(const double* r) {
 
 #define ACST_ROTATION_RULE "rotation must be a finite proper orthogonal 3x3 matrix, row-major (|Q Q^T - I| < 1e-8, det Q > 0)"
 
+// The offsets' rule (acst.h, "Nonlocal regularisation"), "" where they may be taken.
+std::string offset_problem(const acst_model& model, const double* offset) {
+  if (!offset) return "";
+  for (int k = 0; k < model.kind->nonlocal_size(); ++k)
+    if (!(std::abs(offset[k]) < acst::void_ratio_limit))
+      return "the nonlocal offset " + std::to_string(offset[k]) + " (value " + std::to_string(k) +
+             ") is not finite or not smaller than " + std::to_string(acst::void_ratio_limit) + " in size";
+  return "";
+}
+
 }  // namespace
 
 #define ACST_GUARD(...)                                                       \
@@ -127,11 +137,18 @@ acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst
 
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain) {
+  return acst_update_nonlocal(stress, statev, tangent, counters, model, dstrain, nullptr);
+}
+
+acst_status acst_update_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                 const acst_model* model, const double* dstrain, const double* offset) {
   ACST_REQUIRE(stress && model && dstrain && (statev || state_size_of(*model) == 0),
                "acst_update: a required pointer argument is NULL");
   ACST_GUARD({
+    if (const std::string p = offset_problem(*model, offset); !p.empty())
+      return make_status(ACST_INVALID_INPUT, "acst_update_nonlocal: " + p, 1.0);
     acst::integration::Report rep;
-    const acst_status st = model->kind->update(stress, statev, tangent, dstrain, rep);
+    const acst_status st = model->kind->update(stress, statev, tangent, dstrain, offset, rep);
     if (counters) copy_counters(rep, counters);
     // A kind's OK is ok_status(); made here, it is built in the caller's status rather than
     // copied there (272 bytes per call, mostly the empty message).
@@ -157,7 +174,7 @@ acst_status acst_update_batch(double* stress, size_t stress_stride, double* stat
     for (size_t i = 0; i < n; ++i) {
       double* point_statev = statev ? statev + i * statev_stride : nullptr;
       const acst_status st =
-          model->kind->update(stress + i * stress_stride, point_statev, nullptr, dstrain + i * dstrain_stride, rep);
+          model->kind->update(stress + i * stress_stride, point_statev, nullptr, dstrain + i * dstrain_stride, nullptr, rep);
       total += rep.counters;
       plastic += rep.plastic;
       if (point_status) point_status[i] = st.code;
@@ -229,12 +246,20 @@ acst_status acst_rotate_state(double* stress, double* statev, const acst_model* 
 
 acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
                                 const acst_model* model, const double* rotation, const double* dstrain) {
+  return acst_update_rotated_nonlocal(stress, statev, tangent, counters, model, rotation, dstrain, nullptr);
+}
+
+acst_status acst_update_rotated_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                         const acst_model* model, const double* rotation, const double* dstrain,
+                                         const double* offset) {
   ACST_REQUIRE(stress && model && rotation && dstrain && (statev || state_size_of(*model) == 0),
                "acst_update_rotated: a required pointer argument is NULL");
   ACST_REQUIRE(proper_rotation(rotation), "acst_update_rotated: " ACST_ROTATION_RULE);
   ACST_GUARD({
+    if (const std::string p = offset_problem(*model, offset); !p.empty())
+      return make_status(ACST_INVALID_INPUT, "acst_update_rotated_nonlocal: " + p, 1.0);
     acst::integration::Report rep;
-    const acst_status st = model->kind->update_rotated(stress, statev, tangent, rotation, dstrain, rep);
+    const acst_status st = model->kind->update_rotated(stress, statev, tangent, rotation, dstrain, offset, rep);
     if (counters) copy_counters(rep, counters);
     if (st.code == ACST_OK) return ok_status();  // built in the caller's status (acst_update)
     return st;
@@ -244,6 +269,14 @@ acst_status acst_update_rotated(double* stress, double* statev, double* tangent,
 acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
                                       int* point_status, acst_counters* point_counters, const acst_model* model,
                                       size_t n, const double* rotation, const double* dstrain) {
+  return acst_update_rotated_batch_nonlocal(stress, stress_stride, statev, statev_stride, point_status, point_counters,
+                                            model, n, rotation, dstrain, nullptr);
+}
+
+acst_status acst_update_rotated_batch_nonlocal(double* stress, size_t stress_stride, double* statev,
+                                               size_t statev_stride, int* point_status, acst_counters* point_counters,
+                                               const acst_model* model, size_t n, const double* rotation,
+                                               const double* dstrain, const double* offset) {
   ACST_REQUIRE(model, "acst_update_rotated_batch: a required pointer is NULL");
   const size_t nstatv = static_cast<size_t>(state_size_of(*model));
   ACST_REQUIRE(n == 0 || (stress && rotation && dstrain && (statev || nstatv == 0)),
@@ -251,8 +284,9 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
   ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv),
                "acst_update_rotated_batch: strides must be at least 6 (stress) and acst_state_size (state)");
   ACST_GUARD({
-    // In blocks of points with a proper rotation, updated in place together (a failed point
-    // stays as it came).
+    const size_t per_point = static_cast<size_t>(model->kind->nonlocal_size());
+    // In blocks of points with a proper rotation and usable offsets, updated in place together
+    // (a failed point stays as it came).
     constexpr int block = 16;
     acst_status first = ok_status();
     size_t first_point = n;
@@ -264,7 +298,7 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
     for (size_t start = 0; start < n; start += block) {
       const int m = static_cast<int>(std::min<size_t>(block, n - start));
       double *s_ptr[block], *q_ptr[block];
-      const double *r_ptr[block], *e_ptr[block];
+      const double *r_ptr[block], *e_ptr[block], *o_ptr[block];
       int index[block], codes[block];
       acst::integration::Report reports[block];
       int used = 0;
@@ -276,6 +310,14 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
           note_failure(i, ACST_INVALID_INPUT, "acst_update_rotated_batch: " ACST_ROTATION_RULE, 1.0);
           continue;
         }
+        const double* point_offset = offset && per_point > 0 ? offset + per_point * i : nullptr;
+        if (const std::string p = offset_problem(*model, point_offset); !p.empty()) {
+          if (point_status) point_status[i] = ACST_INVALID_INPUT;
+          if (point_counters) point_counters[i] = acst_counters{};
+          note_failure(i, ACST_INVALID_INPUT, ("acst_update_rotated_batch_nonlocal: " + p).c_str(), 1.0);
+          continue;
+        }
+        o_ptr[used] = point_offset;
         s_ptr[used] = stress + i * stress_stride;
         q_ptr[used] = statev ? statev + i * statev_stride : nullptr;
         r_ptr[used] = rotation + 9 * i;
@@ -283,7 +325,8 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
         index[used++] = k;
       }
       acst_status failure = ok_status();
-      model->kind->update_rotated_points(used, s_ptr, q_ptr, r_ptr, e_ptr, codes, reports, failure);
+      model->kind->update_rotated_points(used, s_ptr, q_ptr, r_ptr, e_ptr, offset ? o_ptr : nullptr, codes, reports,
+                                         failure);
       bool failure_named = false;  // `failure` is the block's first failed point's status
       for (int u = 0; u < used; ++u) {
         const size_t i = start + static_cast<size_t>(index[u]);
@@ -301,11 +344,34 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
 
 acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* model, const double* stress,
                             const double* statev, const double* dstrain) {
+  return acst_reproducer_nonlocal(buffer, length, model, stress, statev, dstrain, nullptr);
+}
+
+acst_status acst_reproducer_nonlocal(char* buffer, size_t* length, const acst_model* model, const double* stress,
+                                     const double* statev, const double* dstrain, const double* offset) {
   ACST_REQUIRE(length && model && stress && dstrain && (statev || state_size_of(*model) == 0),
                "acst_reproducer: a required pointer argument is NULL");
   ACST_GUARD({
-    return text_to_buffer(model->kind->reproducer(stress, statev, dstrain).dump(2) + "\n", buffer, length,
+    if (const std::string p = offset_problem(*model, offset); !p.empty())
+      return make_status(ACST_INVALID_INPUT, "acst_reproducer_nonlocal: " + p, 1.0);
+    return text_to_buffer(model->kind->reproducer(stress, statev, dstrain, offset).dump(2) + "\n", buffer, length,
                           "acst_reproducer");
+  })
+}
+
+int acst_nonlocal_size(const acst_model* model) { return model ? model->kind->nonlocal_size() : 0; }
+
+const char* acst_nonlocal_name(const acst_model* model, int i) {
+  return model && i >= 0 && i < model->kind->nonlocal_size() ? model->kind->nonlocal_name(i) : nullptr;
+}
+
+acst_status acst_nonlocal_local(double* local, const acst_model* model, const double* stress, const double* statev) {
+  ACST_REQUIRE(local && model && stress && (statev || state_size_of(*model) == 0),
+               "acst_nonlocal_local: a pointer argument is NULL");
+  ACST_REQUIRE_PHYSICAL("acst_nonlocal_local");
+  ACST_GUARD({
+    model->kind->nonlocal_local(local, stress, statev);
+    return ok_status();
   })
 }
 

@@ -59,7 +59,7 @@ bool state_variables_finite(const double* statev) {
 }
 
 acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
-                         integration::Report& rep) {
+                         integration::Report& rep, double void_ratio_offset) {
   if (!state_variables_finite(statev)) {
     rep = integration::Report{};
     rep.status = integration::Status::nonphysical_state;
@@ -69,7 +69,7 @@ acst_status update_point(double* stress, double* statev, double* tangent, const 
   s.stress = stress_to_model(stress);
   fill_state(s, statev);
   Mat6 D;
-  rep = mat.update(s, strain_to_model(dstrain), tangent ? &D : nullptr);
+  rep = mat.update(s, strain_to_model(dstrain), tangent ? &D : nullptr, void_ratio_offset);
   if (rep.status != integration::Status::ok) return status_from_report(rep);
   stress_from_model(s.stress, stress);
   store_state(s, statev);

@@ -18,8 +18,9 @@ void copy_counters(const integration::Report& r, acst_counters* out);
 bool state_variables_finite(const double* statev);
 
 // Converts, updates one sand point, converts back; stress and statev untouched on failure.
+// `void_ratio_offset`: the host's nonlocal offset (Material::update).
 acst_status update_point(double* stress, double* statev, double* tangent, const Material& mat, const double* dstrain,
-                         integration::Report& rep);
+                         integration::Report& rep, double void_ratio_offset = 0.0);
 
 // Entry checks of the closed-form updates, reported like the integrator's: false (and `rep`
 // says why) for a non-finite increment, stress or state.

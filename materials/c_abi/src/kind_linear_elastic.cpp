@@ -29,7 +29,7 @@ class LinearElasticKind final : public ModelKind {
     return ok_status();
   }
 
-  acst_status update(double* stress, double*, double* tangent, const double* dstrain,
+  acst_status update(double* stress, double*, double* tangent, const double* dstrain, const double* /* nothing softens */,
                      integration::Report& rep) const override {
     const Sym s = stress_to_model(stress), deps = strain_to_model(dstrain);
     if (!entry_ok(s, true, deps, rep)) return status_from_report(rep);

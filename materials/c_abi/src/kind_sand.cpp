@@ -58,9 +58,17 @@ class SandKind final : public ModelKind {
     return "";
   }
 
-  acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
+  // One quantity nonlocally, the void ratio: its offset moves the state parameter (docs/model.md
+  // section 9).
+  int nonlocal_size() const override { return 1; }
+  const char* nonlocal_name(int i) const override { return i == 0 ? "void_ratio" : nullptr; }
+  void nonlocal_local(double* out, const double*, const double* statev) const override {
+    out[0] = statev[slot_void_ratio];
+  }
+
+  acst_status update(double* stress, double* statev, double* tangent, const double* dstrain, const double* nonlocal,
                      integration::Report& rep) const override {
-    return update_point(stress, statev, tangent, material_, dstrain, rep);
+    return update_point(stress, statev, tangent, material_, dstrain, rep, nonlocal ? nonlocal[0] : 0.0);
   }
 
   // Up to UpdateLanes::width points at a time in SIMD lanes (acst/update_lanes.hpp), each turned
@@ -69,10 +77,11 @@ class SandKind final : public ModelKind {
   // the lanes leave go through update_rotated. The lanes' numbers are update_point's after
   // rotated_copy's turn, so every point's are.
   void update_rotated_points(int m, double* const* stress, double* const* statev, const double* const* r,
-                             const double* const* dstrain, int* codes, integration::Report* reports,
-                             acst_status& failure) const override {
+                             const double* const* dstrain, const double* const* nonlocal, int* codes,
+                             integration::Report* reports, acst_status& failure) const override {
     if (!lanes_apply(material_))
-      return ModelKind::update_rotated_points(m, stress, statev, r, dstrain, codes, reports, failure);
+      return ModelKind::update_rotated_points(m, stress, statev, r, dstrain, nonlocal, codes, reports, failure);
+    const auto offset_of = [&](int k) { return nonlocal && nonlocal[k] ? nonlocal[k] : nullptr; };
     constexpr int W = UpdateLanes::width;
     for (int first = 0; first < m; first += W) {
       const int end = std::min(m, first + W);
@@ -80,7 +89,7 @@ class SandKind final : public ModelKind {
       int point[W] = {};
       for (int k = first; k < end; ++k) {
         codes[k] = -1;  // not yet updated
-        if (!put_turned(lanes, lanes.n, stress[k], statev[k], r[k], dstrain[k])) continue;
+        if (!put_turned(lanes, lanes.n, stress[k], statev[k], r[k], dstrain[k], offset_of(k))) continue;
         point[lanes.n++] = k;
       }
       update_lanes(material_, lanes);
@@ -93,7 +102,7 @@ class SandKind final : public ModelKind {
       }
       for (int k = first; k < end; ++k) {
         if (codes[k] != -1) continue;
-        const acst_status st = update_rotated(stress[k], statev[k], nullptr, r[k], dstrain[k], reports[k]);
+        const acst_status st = update_rotated(stress[k], statev[k], nullptr, r[k], dstrain[k], offset_of(k), reports[k]);
         codes[k] = st.code;
         if (st.code != ACST_OK && failure.code == ACST_OK) failure = st;
       }
@@ -111,9 +120,11 @@ class SandKind final : public ModelKind {
     std::memcpy(out, v, sizeof v);
   }
 
-  nlohmann::json reproducer(const double* stress, const double* statev, const double* dstrain) const override {
+  nlohmann::json reproducer(const double* stress, const double* statev, const double* dstrain,
+                            const double* nonlocal) const override {
     return update_reproducer(material_, state_of(stress, statev), strain_to_model(dstrain),
-                             "One-increment reproducer of a material update written through the C ABI");
+                             "One-increment reproducer of a material update written through the C ABI",
+                             nonlocal ? nonlocal[0] : 0.0);
   }
 
   acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const override {
@@ -130,7 +141,7 @@ class SandKind final : public ModelKind {
   // where update_point would refuse the state before converting (a state variable not finite)
   // and for other turns, which give shear out of the plane that the lanes leave anyway.
   static bool put_turned(UpdateLanes& lanes, int l, const double* stress, const double* statev, const double* r,
-                         const double* dstrain) {
+                         const double* dstrain, const double* nonlocal) {
     if (!turns_about_axis3(r)) return false;
     double a[6], s[6], f[6];
     for (int i = 0; i < 6; ++i) a[i] = stress_entry_to_model(stress, i);
@@ -146,6 +157,7 @@ class SandKind final : public ModelKind {
       lanes.strain_increment[i][l] = strain_entry_to_model(dstrain, i);
     }
     lanes.void_ratio[l] = statev[slot_void_ratio];
+    lanes.void_ratio_offset[l] = nonlocal ? nonlocal[0] : 0.0;
     lanes.H[l] = statev[slot_H];
     lanes.substep_hint[l] = statev[slot_substep_hint];
     return true;

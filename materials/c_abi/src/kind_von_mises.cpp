@@ -39,7 +39,7 @@ class VonMisesKind final : public ModelKind {
   }
 
   acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
-                     integration::Report& rep) const override {
+                     const double* /* nothing softens */, integration::Report& rep) const override {
     reference::VonMisesPoint point{stress_to_model(stress), statev[0]};
     const Sym deps = strain_to_model(dstrain);
     const bool state_ok = std::isfinite(point.equivalent_plastic_strain) && point.equivalent_plastic_strain >= 0.0;

@@ -28,23 +28,30 @@ class ModelKind {
   virtual const StateLayout& state() const = 0;
   virtual acst_status initial_state(double* statev, double* stress_out, const double* stress0, double void_ratio,
                                     const double* deposition_direction) const = 0;
-  // Stress and state unchanged unless the status is OK; `rep` gets the counters.
+  // The quantities the kind takes nonlocally (acst_nonlocal_size: none by default), their names
+  // and a point's local values.
+  virtual int nonlocal_size() const { return 0; }
+  virtual const char* nonlocal_name(int) const { return nullptr; }
+  virtual void nonlocal_local(double*, const double*, const double*) const {}
+  // Stress and state unchanged unless the status is OK; `rep` gets the counters. `nonlocal`: the
+  // point's nonlocal offsets (nonlocal_size() doubles), or null for the local model.
   virtual acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
-                             integration::Report& rep) const = 0;
+                             const double* nonlocal, integration::Report& rep) const = 0;
   // The stress and the tensorial state variables turned by the row-major rotation r (T -> Q T
   // Q^T, acst_rotate_state) into copies s (6) and q (the state size), the others copied.
   void rotated_copy(const double* stress, const double* statev, const double* r, double* s, double* q) const;
   // update() of the state turned by r (rotated_copy): acst_update_rotated's numbers, in place,
   // and stress and state unchanged unless the status is OK.
   acst_status update_rotated(double* stress, double* statev, double* tangent, const double* r,
-                             const double* dstrain, integration::Report& rep) const;
+                             const double* dstrain, const double* nonlocal, integration::Report& rep) const;
   // update_rotated() (no tangent) of m points at once, each's code in codes and counters in
   // reports; a failed point's status also in `failure` (the first one's only). By default one
   // after the other; a kind may update several points together where each point's numbers stay
   // update_rotated()'s.
+  // `nonlocal`: each point's offsets (null pointers where local), or null for all local.
   virtual void update_rotated_points(int m, double* const* stress, double* const* statev, const double* const* r,
-                                     const double* const* dstrain, int* codes, integration::Report* reports,
-                                     acst_status& failure) const;
+                                     const double* const* dstrain, const double* const* nonlocal, int* codes,
+                                     integration::Report* reports, acst_status& failure) const;
   // "" for a stress and state an update may start from, else what is wrong with which value
   // (the entry check of acst_diagnostics, acst_wave_speed, acst_rotate_state). By default:
   // a finite stress and finite state variables.
@@ -57,7 +64,8 @@ class ModelKind {
   virtual acst_status void_ratio_from_relative_density(double* void_ratio, double relative_density) const;
   // The element-test scene replaying one update (acst/reproducer.hpp); kinds the element driver
   // cannot run throw InputError.
-  virtual nlohmann::json reproducer(const double* stress, const double* statev, const double* dstrain) const;
+  virtual nlohmann::json reproducer(const double* stress, const double* statev, const double* dstrain,
+                                    const double* nonlocal) const;
 };
 
 // Reads a material document and builds its kind; throws InputError naming the JSON path.

@@ -52,14 +52,14 @@ void ModelKind::rotated_copy(const double* stress, const double* statev, const d
 }
 
 acst_status ModelKind::update_rotated(double* stress, double* statev, double* tangent, const double* r,
-                                      const double* dstrain, integration::Report& rep) const {
+                                      const double* dstrain, const double* nonlocal, integration::Report& rep) const {
   // The rotated copies go straight to the update, whose entry checks refuse what is not finite
   // or not physical and whose OK vouches for what it returns: the rotated state is never handed
   // out, so acst_rotate_state's own check of it and its copies back are not needed (with them,
   // 3-4 % of an MPM step, bench/RESULTS.md 1s). The numbers are those of the two calls.
   double s[6], q[ACST_NSTATV];
   rotated_copy(stress, statev, r, s, q);
-  const acst_status st = update(s, q, tangent, dstrain, rep);
+  const acst_status st = update(s, q, tangent, dstrain, nonlocal, rep);
   if (st.code != ACST_OK) return st;
   std::copy(s, s + 6, stress);
   std::copy(q, q + state().size, statev);
@@ -67,10 +67,11 @@ acst_status ModelKind::update_rotated(double* stress, double* statev, double* ta
 }
 
 void ModelKind::update_rotated_points(int m, double* const* stress, double* const* statev, const double* const* r,
-                                      const double* const* dstrain, int* codes, integration::Report* reports,
-                                      acst_status& failure) const {
+                                      const double* const* dstrain, const double* const* nonlocal, int* codes,
+                                      integration::Report* reports, acst_status& failure) const {
   for (int k = 0; k < m; ++k) {
-    const acst_status st = update_rotated(stress[k], statev[k], nullptr, r[k], dstrain[k], reports[k]);
+    const acst_status st =
+        update_rotated(stress[k], statev[k], nullptr, r[k], dstrain[k], nonlocal ? nonlocal[k] : nullptr, reports[k]);
     codes[k] = st.code;
     if (st.code != ACST_OK && failure.code == ACST_OK) failure = st;
   }
@@ -81,7 +82,7 @@ acst_status ModelKind::void_ratio_from_relative_density(double*, double) const {
                      1.0);
 }
 
-nlohmann::json ModelKind::reproducer(const double*, const double*, const double*) const {
+nlohmann::json ModelKind::reproducer(const double*, const double*, const double*, const double*) const {
   throw InputError(std::string("reproducers are written for the sand models (ACST, isotropic) that acst_element runs, not for '") +
                    name() + "'");
 }

@@ -34,14 +34,17 @@ struct PlasticQuantities {
 };
 
 // With the stress ratio state of sigma already at hand (see AcstRates::ratio_state).
+// `void_ratio_offset`: a host's nonlocal void ratio minus the point's own (docs/model.md section
+// 9): the state parameter, and through it the dilatancy and the peak, take e + offset; the
+// elasticity and the hardening keep e. 0 is the local model.
 inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
-                                            const StressRatioState& ratio) {
+                                            const StressRatioState& ratio, double void_ratio_offset = 0.0) {
   PlasticQuantities q;
   q.p = mean_stress(sigma);
   q.ratio = ratio;
   const double g = q.ratio.lode.g;
   set_elastic_moduli(q.moduli, prm, e, q.p, F);
-  q.psi = state_parameter(prm, e, q.p);
+  q.psi = state_parameter(prm, e + void_ratio_offset, q.p);
   q.A = fabric_anisotropy_variable(F, q.ratio.n);
   q.zeta = dilatancy_state_parameter(q.psi, prm.e_A, q.A);
   q.D = dilatancy(prm.d1, prm.m, q.zeta, q.ratio.R, prm.Mc, g);
@@ -55,8 +58,9 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
 }
 
 inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
-                                            const Sym& strain_direction) {
-  return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, lode_shape(prm), prm.R_tolerance, strain_direction));
+                                            const Sym& strain_direction, double void_ratio_offset = 0.0) {
+  return plastic_quantities(prm, sigma, F, e, stress_ratio_state(sigma, lode_shape(prm), prm.R_tolerance, strain_direction),
+                            void_ratio_offset);
 }
 
 // The isotropic D_e : d eps^p / L = 2G n + sqrt(2/3) K D I, into a (n is deviatoric, so the
@@ -123,7 +127,9 @@ class AcstRates {
   using Counters = integration::Counters;
 
   // One object per update (never shared between threads): it keeps the last stress ratio state.
-  explicit AcstRates(const Parameters& prm) : prm_(prm) {}
+  // `void_ratio_offset`: the host's nonlocal offset of the update (plastic_quantities).
+  explicit AcstRates(const Parameters& prm, double void_ratio_offset = 0.0)
+      : prm_(prm), void_ratio_offset_(void_ratio_offset) {}
 
   static Sym stress(const Vector& y) { return y.template head<6>(); }
   static Sym fabric(const Vector& y) { return y.template segment<6>(6); }
@@ -150,7 +156,7 @@ class AcstRates {
       ++c.guard_pressure_floor;
       return Reason::pressure_floor;
     }
-    const PlasticQuantities q = plastic_quantities(prm_, sigma, F, e, ratio_state(sigma, deps));
+    const PlasticQuantities q = plastic_quantities(prm_, sigma, F, e, ratio_state(sigma, deps), void_ratio_offset_);
     count_guards(q, c);
     const LoadingIndexTerms L = loading_index_terms(q.moduli, q.Kp, q.D, q.ratio.n, q.n_r, deps);
     if (!(L.denominator > 0.0)) {
@@ -205,6 +211,7 @@ class AcstRates {
 
  private:
   const Parameters& prm_;
+  double void_ratio_offset_;
   // The start state's stress ratio state is wanted twice in a plastic update, by the unloading
   // test of the elastic fraction and by the first rate (bench/RESULTS.md section 1, proposal 2):
   // the last one is kept with the stress and strain direction it was computed for.

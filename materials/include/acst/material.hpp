@@ -40,11 +40,14 @@ class Material {
   // Advances the state over a strain increment (compression positive, tensor shear).
   // On failure the state is left as it was and the report asks for a smaller increment.
   // If tangent is given it receives d(stress)/d(strain) (continuum tangent at the end state).
-  integration::Report update(State& state, const Sym& strain_increment, Mat6* tangent = nullptr) const;
+  // `void_ratio_offset`: a host's nonlocal void ratio minus the state's own at the start of the
+  // increment (docs/model.md section 9; finite, below void_ratio_limit in size); 0: local.
+  integration::Report update(State& state, const Sym& strain_increment, Mat6* tangent = nullptr,
+                             double void_ratio_offset = 0.0) const;
 
   // Continuum tangent: elastoplastic if `plastic`, elastic otherwise; the strain direction picks
   // n where the stress ratio vanishes.
-  Mat6 tangent(const State& state, bool plastic, const Sym& strain_direction) const;
+  Mat6 tangent(const State& state, bool plastic, const Sym& strain_direction, double void_ratio_offset = 0.0) const;
 
   Diagnostics diagnostics(const State& state, const Sym& strain_direction = Sym::Zero()) const;
 

@@ -16,8 +16,8 @@ namespace acst {
 nlohmann::json material_document(const Material& material);
 
 // The one-increment scene; `strain_increment` in the model's convention (compression positive,
-// tensor shear).
+// tensor shear); a nonlocal update's offset (Material::update) goes into the initial state.
 nlohmann::json update_reproducer(const Material& material, const State& start, const Sym& strain_increment,
-                                 const std::string& description);
+                                 const std::string& description, double void_ratio_offset = 0.0);
 
 }  // namespace acst

@@ -22,6 +22,7 @@ struct UpdateLanes {
   double substep_hint[width];
   // In:
   double strain_increment[6][width];
+  double void_ratio_offset[width];  // the host's nonlocal offset (Material::update), 0 where local
   // Out: 1 where the lane holds Material::update's result (status OK, no tangent), 0 where the
   // lane is as it came and Material::update must be called for it.
   int done[width];
@@ -34,7 +35,7 @@ struct UpdateLanes {
 
 // A point's state and strain increment into lane l, and lane l's state back out (all of State
 // but the floor-reset count, which a lane never changes).
-void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_increment);
+void put_lane(UpdateLanes& lanes, int l, const State& state, const Sym& strain_increment, double void_ratio_offset = 0.0);
 void take_lane(const UpdateLanes& lanes, int l, State& state);
 
 // The report Material::update gives for done lane l (status OK and the counters of its route);

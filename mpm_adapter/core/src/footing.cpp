@@ -62,10 +62,9 @@ void Footing::touch(const Particles& P, const Grid& grid, double particle_half_w
     // The domain's stretch along the axes: the shear terms would tilt its faces, which the flat
     // footing keeps flat, and under the footing's edge would inflate the box into false overlap.
     // Shrunk, never grown past l h, the undeformed domain the B2GIMP weights use (and the longest
-    // contact the time step allows for): soil torn thin behind a footing inclined at 40 deg (a
-    // particle at the floor stretched 2.9 times, flattened to 0.4) reached under the base's
-    // trailing corner by its stretch alone, and the push grew its height faster than it moved the
-    // particle down: 4 to 16 mm of overlap and 45 m/s in 40 steps (docs/mpm.md, "The footing").
+    // contact the time step allows for): a box grown with the stretch reaches under the base where
+    // the particle does not, and the push then grows the overlap faster than it moves the particle
+    // (docs/footing-study.md, "The contact's stiffness and box").
     const double sx = std::min(std::fabs(F[0]), 1.0), sy = std::min(std::fabs(F[3]), 1.0);
     const double half_x = lh * sx, half_y = lh * sy;
     if (!overlaps(P.x[p], P.y[p], half_x, half_y)) {  // apart: the spring relaxes (written only if held)

@@ -31,6 +31,9 @@ AbiMaterial::AbiMaterial(const std::string& name, const std::string& json_text)
   state_size_ = acst_state_size(model_.get());
   if (state_size_ < 0 || state_size_ > max_state_size)
     throw MaterialError("material '" + name + "': unsupported number of state variables");
+  nonlocal_size_ = acst_nonlocal_size(model_.get());
+  if (nonlocal_size_ < 0 || nonlocal_size_ > 1)
+    throw MaterialError("material '" + name + "': unsupported number of nonlocal quantities");
 }
 
 std::string AbiMaterial::kind() const {
@@ -70,6 +73,10 @@ void AbiMaterial::diagnostics(double* out, const double* stress, const double* s
   check(acst_diagnostics(out, model_.get(), stress, statev), "material '" + name_ + "': diagnostics");
 }
 
+void AbiMaterial::nonlocal_local(double* out, const double* stress, const double* statev) const {
+  check(acst_nonlocal_local(out, model_.get(), stress, statev), "material '" + name_ + "': nonlocal quantities");
+}
+
 int AbiMaterial::state_index(const std::string& name) const {
   for (int i = 0; i < state_size_; ++i)
     if (name == acst_state_name(model_.get(), i)) return i;
@@ -91,7 +98,7 @@ void increment_of(const double* L, double dt, double* Q, double* de) {
 }  // namespace
 
 acst_status AbiMaterial::update(double* stress, double* statev, const double* L, double dt, bool& stress_free,
-                             std::string* reproducer) const {
+                                std::string* reproducer, const double* offset) const {
   stress_free = false;
   double Q[9], de[6];
   increment_of(L, dt, Q, de);
@@ -99,22 +106,23 @@ acst_status AbiMaterial::update(double* stress, double* statev, const double* L,
   // Turned and updated in one call, the common case. A failure leaves the state as it came: the
   // rare retry turns it on its own, updates it again and subdivides the increment (the numbers
   // of the two calls). Every return is `st`, so the status is built where the caller keeps it.
-  acst_status st = acst_update_rotated(stress, statev, nullptr, &counters, model_.get(), Q, de);
+  acst_status st = acst_update_rotated_nonlocal(stress, statev, nullptr, &counters, model_.get(), Q, de, offset);
   if (st.code == ACST_OK) {
     stress_free = reset_to_floor(stress, counters);
     return st;
   }
-  return retry(stress, statev, Q, de, stress_free, reproducer);
+  return retry(stress, statev, Q, de, stress_free, reproducer, offset);
 }
 
 std::size_t AbiMaterial::update_batch(std::size_t n, double* stress, double* statev, const double* L, double dt,
-                                   int* stress_free, acst_status& failure, std::string* reproducer) const {
+                                      int* stress_free, acst_status& failure, std::string* reproducer,
+                                      const double* offset) const {
   double Q[9 * batch_size] = {}, de[6 * batch_size] = {};
   int codes[batch_size];
   acst_counters counters[batch_size];
   for (std::size_t k = 0; k < n; ++k) increment_of(L + 4 * k, dt, Q + 9 * k, de + 6 * k);
   const size_t stride = static_cast<size_t>(state_size_);
-  acst_update_rotated_batch(stress, 6, statev, stride, codes, counters, model_.get(), n, Q, de);
+  acst_update_rotated_batch_nonlocal(stress, 6, statev, stride, codes, counters, model_.get(), n, Q, de, offset);
   std::size_t first = n;
   for (std::size_t k = 0; k < n; ++k) {
     double* s = stress + 6 * k;
@@ -125,7 +133,8 @@ std::size_t AbiMaterial::update_batch(std::size_t n, double* stress, double* sta
     }
     bool free = false;
     const bool first_failure = first == n;
-    const acst_status st = retry(s, q, Q + 9 * k, de + 6 * k, free, first_failure ? reproducer : nullptr);
+    const double* point_offset = offset ? offset + static_cast<std::size_t>(nonlocal_size_) * k : nullptr;
+    const acst_status st = retry(s, q, Q + 9 * k, de + 6 * k, free, first_failure ? reproducer : nullptr, point_offset);
     stress_free[k] = free;
     if (st.code != ACST_OK && first_failure) {
       first = k;
@@ -136,11 +145,11 @@ std::size_t AbiMaterial::update_batch(std::size_t n, double* stress, double* sta
 }
 
 acst_status AbiMaterial::retry(double* stress, double* statev, const double* Q, const double* de, bool& stress_free,
-                            std::string* reproducer) const {
+                               std::string* reproducer, const double* offset) const {
   acst_status st = acst_rotate_state(stress, statev, model_.get(), Q);
   if (st.code != ACST_OK) return st;
   acst_counters counters{};
-  st = acst_update(stress, statev, nullptr, &counters, model_.get(), de);
+  st = acst_update_nonlocal(stress, statev, nullptr, &counters, model_.get(), de, offset);
   for (int parts = 2; st.code == ACST_STEP_REDUCTION && parts <= 64; parts *= 2) {
     double part[6];
     for (int k = 0; k < 6; ++k) part[k] = de[k] / parts;
@@ -148,7 +157,7 @@ acst_status AbiMaterial::retry(double* stress, double* statev, const double* Q, 
     std::memcpy(s_try, stress, sizeof s_try);
     std::memcpy(q_try, statev, sizeof(double) * static_cast<size_t>(state_size_));
     for (int k = 0; k < parts && (k == 0 || st.code == ACST_OK); ++k)
-      st = acst_update(s_try, q_try, nullptr, &counters, model_.get(), part);
+      st = acst_update_nonlocal(s_try, q_try, nullptr, &counters, model_.get(), part, offset);
     if (st.code == ACST_OK) {
       std::memcpy(stress, s_try, sizeof s_try);
       std::memcpy(statev, q_try, sizeof(double) * static_cast<size_t>(state_size_));
@@ -158,9 +167,9 @@ acst_status AbiMaterial::retry(double* stress, double* statev, const double* Q, 
   if (st.code != ACST_OK && reproducer) {
     size_t length = 0;
     reproducer->clear();
-    if (acst_reproducer(nullptr, &length, model_.get(), stress, statev, de).code == ACST_OK) {
+    if (acst_reproducer_nonlocal(nullptr, &length, model_.get(), stress, statev, de, offset).code == ACST_OK) {
       reproducer->assign(length, '\0');
-      if (acst_reproducer(reproducer->data(), &length, model_.get(), stress, statev, de).code == ACST_OK)
+      if (acst_reproducer_nonlocal(reproducer->data(), &length, model_.get(), stress, statev, de, offset).code == ACST_OK)
         reproducer->resize(length - 1);
       else
         reproducer->clear();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include "acst_mpm/dilation_averaging.hpp"
@@ -30,11 +31,21 @@ Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
     // From the grid as built (spacing h): the base wall's row stays put, the row of the footing's
     // starting base follows it.
     rows_.on = true;
-    rows_.fixed_row = boundaries_.walls.base_fixed ? static_cast<int>(std::lround((boundaries_.walls.base - grid_.y0) / grid_.h)) : 0;
+    const Walls& walls = boundaries_.walls;
+    rows_.fixed_row = walls.base_wall != WallKind::none ? static_cast<int>(std::lround((walls.base - grid_.y0) / grid_.h)) : 0;
     rows_.fixed_y = grid_.y0 + rows_.fixed_row * grid_.h;
     rows_.base_row = static_cast<int>(std::lround((boundaries_.footing.base_y() - grid_.y0) / grid_.h));
     if (rows_.base_row <= rows_.fixed_row)
       throw SimulationError("the rows cannot follow a footing whose base lies on or below the grid's fixed row");
+  }
+  const Regularisation& reg = settings_.regularisation;
+  if (reg.internal_length > 0.0) {
+    std::vector<int> takes_part(particles_.n);
+    for (std::size_t p = 0; p < particles_.n; ++p) takes_part[p] = materials_[particles_.material[p]]->nonlocal_size() > 0;
+    const std::optional<double> mirror =
+        boundaries_.symmetric_half ? std::optional<double>(boundaries_.walls.left) : std::nullopt;
+    nonlocal_ = NonlocalAverage(reg.internal_length, reg.kernel, std::move(takes_part), mirror);
+    if (clock_.step == 0) local_void_ratios(particles_.void_ratio_averaged);
   }
   prepare();
 }
@@ -201,6 +212,11 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
   std::vector<long long> failed(T, -1);
   std::vector<std::string> messages(T), reproducers(T);
   const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
+  // The regularisation's offsets from particle p on (one a particle), for a material that takes
+  // them: none while the model is local, so the local update's numbers stay as they were.
+  const auto offset_of = [&](const AbiMaterial& mat, std::size_t p) -> const double* {
+    return nonlocal_.active() && mat.nonlocal_size() > 0 ? &P.void_ratio_offset[p] : nullptr;
+  };
   if (averaged) velocity_gradients_averaged(vx, vy);
   // The loop is instantiated once per setting and chosen here: a branch inside it cost the
   // default 1-2 % (bench/RESULTS.md 1t).
@@ -243,16 +259,18 @@ void Simulation::update_stress(const double* vx, const double* vy, double dt_hal
         std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
         acst_status failure;
         const AbiMaterial& mat = *materials_[P.material[first]];
-        const std::size_t bad = mat.update_batch(n, &P.stress[6 * first], P.statev.data() + P.state_size * first,
-                                                 Ls.data(), dt_half, &P.stress_free[first], failure, reproducer);
+        const std::size_t bad =
+            mat.update_batch(n, &P.stress[6 * first], P.statev.data() + P.state_size * first, Ls.data(), dt_half,
+                             &P.stress_free[first], failure, reproducer, offset_of(mat, first));
         if (bad < n && failed[t] < 0) note_failure(first + bad, failure);
         return;
       }
       for (std::size_t p = first; p < first + n; ++p) {
         std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;
         bool free = false;
-        const acst_status st = materials_[P.material[p]]->update(&P.stress[6 * p], P.statev.data() + P.state_size * p,
-                                                                &Ls[4 * (p - first)], dt_half, free, reproducer);
+        const AbiMaterial& mat = *materials_[P.material[p]];
+        const acst_status st = mat.update(&P.stress[6 * p], P.statev.data() + P.state_size * p, &Ls[4 * (p - first)],
+                                          dt_half, free, reproducer, offset_of(mat, p));
         P.stress_free[p] = free;
         if (st.code != ACST_OK && failed[t] < 0) note_failure(p, st);
       }
@@ -326,6 +344,7 @@ void Simulation::xpic_velocity(int order) {
 // halves (update-stress-average), or once before the internal force or after the re-map.
 void Simulation::step() {
   boundaries_.footing.at_time(clock_.time);
+  regularise();
   follow_footing();
   refresh_time_step();
   compute_shape_functions();
@@ -342,6 +361,45 @@ void Simulation::step() {
     update_stress(work_.ux.data(), work_.uy.data(), part);  // with the re-mapped v
   }
   advance_boundaries();
+}
+
+// Every particle's local void ratio (0 for the particles of a material that takes nothing
+// nonlocally).
+void Simulation::local_void_ratios(std::vector<double>& out) const {
+  const Particles& P = particles_;
+  out.assign(P.n, 0.0);
+  parallel_for(work_.scatter.threads(), P.n, [&](int, std::size_t p) {
+    const AbiMaterial& m = *materials_[P.material[p]];
+    if (m.nonlocal_size() > 0) m.nonlocal_local(&out[p], &P.stress[6 * p], P.statev.data() + P.state_size * p);
+  });
+}
+
+// Every `every` steps, the nonlocal void ratio of every sand particle and its offset from the
+// particle's own, which the material takes for its state parameter until the next averaging
+// (docs/mpm.md, "Nonlocal regularisation").
+void Simulation::regularise() {
+  const Regularisation& reg = settings_.regularisation;
+  if (!nonlocal_.active() || clock_.step % reg.every != 0) return;
+  Particles& P = particles_;
+  const int T = work_.scatter.threads();
+  const double m = reg.over_nonlocal;
+  local_void_ratios(nonlocal_value_);
+  nonlocal_mean_ = nonlocal_value_;
+  if (reg.quantity == NonlocalQuantity::void_ratio) {
+    nonlocal_.average(P, nonlocal_value_.data(), nonlocal_mean_.data(), T);
+    for (std::size_t p = 0; p < P.n; ++p) P.void_ratio_offset[p] = m * (nonlocal_mean_[p] - nonlocal_value_[p]);
+    return;
+  }
+  // The changes since the last averaging, averaged: the nonlocal void ratio (the particle's own
+  // plus its offset) moves by the mean change of its neighbourhood instead of its own.
+  std::vector<double>& change = nonlocal_value_;
+  for (std::size_t p = 0; p < P.n; ++p) {
+    const double e = change[p];
+    change[p] = e - P.void_ratio_averaged[p];
+    P.void_ratio_averaged[p] = e;
+  }
+  nonlocal_.average(P, change.data(), nonlocal_mean_.data(), T);
+  for (std::size_t p = 0; p < P.n; ++p) P.void_ratio_offset[p] += m * (nonlocal_mean_[p] - change[p]);
 }
 
 // The rows between the base wall (or the grid's first row) and the footing's base keep their
@@ -384,25 +442,40 @@ void Simulation::footing_contact() {
   reaction_[reaction_footing] = f.reaction();
 }
 
-// Internal force, weight and surcharge; the walls' and the constraints' reactions; a = f/m.
+// Internal force, weight, surcharge and confining pressure; the walls' and the constraints'
+// reactions; a = f/m.
 void Simulation::internal_force_and_reactions() {
   StepScratch& w = work_;
   Particles& P = particles_;
   const std::size_t n = P.n;
-  {
-    double* out[2] = {w.fx.data(), w.fy.data()};
-    const double g = settings_.gravity, q = boundaries_.surcharge;
+  double* out[2] = {w.fx.data(), w.fy.data()};
+  const double g = settings_.gravity, q = boundaries_.surcharge, sigma3 = boundaries_.confining_pressure;
+  // Instantiated with and without the sides' pressure: without it, the loop is the one it was.
+  const auto scatter = [&](auto confined) {
     w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
       const double V = kilo * P.volume(p);
       const double* s = &P.stress[6 * p];
       const double sxx = V * s[0], syy = V * s[1], sxy = V * s[3];
       const double by = -P.weight_mass[p] * g - kilo * q * P.surcharge_length[p];
-      w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
-        f[0][i] -= sxx * gx + sxy * gy;
-        f[1][i] += by * S - (sxy * gx + syy * gy);
-      });
+      if constexpr (decltype(confined)::value) {
+        // On the side's current length: the particle's height stretched by F_yy.
+        const double bx = kilo * sigma3 * P.side_length[p] * std::fabs(P.F[4 * p + 3]);
+        w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
+          f[0][i] += bx * S - (sxx * gx + sxy * gy);
+          f[1][i] += by * S - (sxy * gx + syy * gy);
+        });
+      } else {
+        w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
+          f[0][i] -= sxx * gx + sxy * gy;
+          f[1][i] += by * S - (sxy * gx + syy * gy);
+        });
+      }
     });
-  }
+  };
+  if (sigma3 != 0.0)
+    scatter(std::true_type{});
+  else
+    scatter(std::false_type{});
   if (boundaries_.footing.uses_contact()) boundaries_.footing.spread(grid_, w.mass.data(), w.fx.data(), w.fy.data());
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
@@ -451,9 +524,9 @@ void Simulation::internal_force_and_reactions() {
 
 // Particle velocities and positions: FLIP, or XPIC(m) (PIC = XPIC(1)), with damping. A particle
 // the material holds at its pressure floor takes the grid's velocity (PIC) in every step: it has
-// no stiffness, so the velocity FLIP keeps for it from step to step is bounded by nothing, and
-// beside the footing's corners such particles were thrown out of the grid at 4-5 m/s by the
-// stress of their neighbours (docs/mpm.md, "Stress-free particles").
+// no stiffness, so the velocity FLIP keeps for it from step to step is bounded by nothing
+// (docs/mpm.md, "Stress-free particles"; what FLIP did to them beside the footing's corners:
+// docs/footing-study.md, "Particles at the pressure floor take PIC").
 void Simulation::update_particles() {
   StepScratch& w = work_;
   Particles& P = particles_;

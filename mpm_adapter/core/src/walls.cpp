@@ -21,21 +21,23 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
     node(0) *= 1.0 + s;
     for (int k = 1; k <= reach; ++k) node(-k) = s * node(k);
   };
-  const auto sign = [c](SideWall side) {
-    return c == FieldKind::scalar ? 1.0 : (c == FieldKind::x || side == SideWall::fixed ? -1.0 : 1.0);
+  // The mirror image's sign: a scalar keeps it; the component normal to the wall changes it, and
+  // the tangential one too where the wall holds it (no slip), not where it slides.
+  const auto sign = [c](WallKind wall, FieldKind normal) {
+    return c == FieldKind::scalar ? 1.0 : (c == normal || wall == WallKind::fixed ? -1.0 : 1.0);
   };
-  if (left_side != SideWall::none) {
-    const double s = sign(left_side);
+  if (left_side != WallKind::none) {
+    const double s = sign(left_side, FieldKind::x);
     const int il = wall_node(left, grid.x0, grid.h);
     for (int j = 0; j < ny; ++j) fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
   }
-  if (right_side != SideWall::none) {
-    const double s = sign(right_side);
+  if (right_side != WallKind::none) {
+    const double s = sign(right_side, FieldKind::x);
     const int ir = wall_node(right, grid.x0, grid.h);
     for (int j = 0; j < ny; ++j) fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
   }
-  if (base_fixed) {
-    const double s = c == FieldKind::scalar ? 1.0 : -1.0;  // no slip: both components odd
+  if (base_wall != WallKind::none) {
+    const double s = sign(base_wall, FieldKind::y);
     const int jb = wall_node(base, grid.y0, grid.hy);
     for (int i = 0; i < nx; ++i) fold_line(s, std::min(jb, ny - 1 - jb), [&](int k) -> double& { return at(i, jb + k); });
   }
@@ -46,9 +48,9 @@ Walls::Lines Walls::lines(const Grid& grid) const {
 }
 
 int Walls::wall_of(int i, int j, const Lines& at) const {
-  if (base_fixed && j <= at.base + 2) return reaction_base;
-  if (left_side != SideWall::none && i <= at.left + 2) return reaction_left;
-  if (right_side != SideWall::none && i >= at.right - 2) return reaction_right;
+  if (base_wall != WallKind::none && j <= at.base + 2) return reaction_base;
+  if (left_side != WallKind::none && i <= at.left + 2) return reaction_left;
+  if (right_side != WallKind::none && i >= at.right - 2) return reaction_right;
   return free_node;
 }
 

@@ -67,7 +67,7 @@ Simulation build_simulation(const Scene& scene) {
   constexpr int margin = GridExtent::margin;
   Grid grid;
   grid.h = grid.hy = h;
-  grid.x0 = x_min - margin * h;
+  grid.x0 = x_min - extent.cells_left * h;
   grid.y0 = y_min - margin * h;
   grid.nx = static_cast<int>(extent.nodes_x);
   grid.ny = static_cast<int>(extent.nodes_y);
@@ -75,10 +75,11 @@ Simulation build_simulation(const Scene& scene) {
   Boundaries boundaries;
   Walls& walls = boundaries.walls;
   walls.left = x_min, walls.right = x_max, walls.base = y_min;
-  walls.base_fixed = s.base_fixed;
-  walls.left_side = half ? SideWall::smooth : s.sides;  // the centre line is a symmetry plane
+  walls.base_wall = s.base;
+  walls.left_side = half ? WallKind::smooth : s.sides;  // the centre line is a symmetry plane
   walls.right_side = s.sides;
   boundaries.surcharge = s.surcharge;
+  boundaries.confining_pressure = s.confining_pressure;
   boundaries.symmetric_half = half;
 
   std::vector<std::shared_ptr<const AbiMaterial>> materials;
@@ -132,7 +133,9 @@ Simulation build_simulation(const Scene& scene) {
         P.mass[p] = P.weight_mass[p] * s.solver.mass_scaling;
         P.material[p] = index[b.material];
         double* sig = &P.stress[6 * p];
-        if (s.geostatic) {
+        if (s.initial_stress == InitialStress::isotropic) {
+          sig[0] = sig[1] = sig[2] = -s.initial_p;
+        } else if (s.initial_stress == InitialStress::geostatic) {
           const double sv = overburden(s, x, y);
           sig[0] = sig[2] = -s.K0 * sv;
           sig[1] = -sv;
@@ -145,6 +148,10 @@ Simulation build_simulation(const Scene& scene) {
         const bool top_row = y + d > column_top(s, x) - 1e-9 * h;
         const bool under_footing = s.footing && std::fabs(x - s.footing->centre_x) < 0.5 * s.footing->width;
         if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = d;
+        if (s.confining_pressure > 0.0) {  // the soil's outermost columns, pushed inward
+          if (x - d < x_min + 1e-9 * h) P.side_length[p] = d;
+          if (x + d > x_max - 1e-9 * h) P.side_length[p] = -d;
+        }
       }
   }
   follow_particles(s, materials, P);

@@ -86,7 +86,8 @@ template <class P, class F>
 void particle_arrays(P& particles, F&& f) {
   auto& p = particles;
   for (auto* v : {&p.x, &p.y, &p.x_initial, &p.y_initial, &p.vx, &p.vy, &p.mass, &p.weight_mass, &p.volume_initial,
-                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.wave_speed, &p.track_frame})
+                  &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.side_length,
+                  &p.wave_speed, &p.void_ratio_offset, &p.void_ratio_averaged, &p.track_frame})
     f(*v);
   f(p.material);
   f(p.stress_free);

@@ -5,6 +5,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
 #include "acst_common/plain_stem.hpp"
+#include "acst_footing_tool/internal_length.hpp"
 #include "acst_footing_tool/scene.hpp"
 #include "acst_footing_tool/scene_size.hpp"
 #include "acst_mpm/material_adapter.hpp"
@@ -105,6 +106,36 @@ Settings read_solver(const json& j, const std::string& p) {
   if (j.contains("mass_scaling")) s.mass_scaling = f::number(j["mass_scaling"], p + "/mass_scaling", {1.0, 1e6});
   if (j.contains("threads")) s.threads = static_cast<int>(f::integer(j["threads"], p + "/threads", 0, 1024));
   return s;
+}
+
+// The sand's nonlocal regularisation (docs/mpm.md, "Nonlocal regularisation"): its internal
+// length given, or derived from the grain size and the acceleration level (internal_length.hpp).
+Regularisation read_regularisation(const json& j, const std::string& p) {
+  f::allow_keys(j, {"internal_length_m", "d50_mm", "acceleration_level", "kernel", "averaged", "over_nonlocal",
+                    "every_steps"},
+                p);
+  Regularisation r;
+  if (j.contains("internal_length_m")) {
+    for (const char* k : {"d50_mm", "acceleration_level"})
+      if (j.contains(k)) f::fail(p + "/" + k, "not with internal_length_m (which it would derive)");
+    r.internal_length = f::number(j["internal_length_m"], p + "/internal_length_m", {0.0, 100.0}, "m");
+  } else {
+    const double d50 = j.contains("d50_mm") ? f::number(j["d50_mm"], p + "/d50_mm", {0.0, 100.0, true, false}, "mm")
+                                            : toyoura_d50_mm;
+    const double level =
+        j.contains("acceleration_level") ? f::number(j["acceleration_level"], p + "/acceleration_level", {1.0, 1000.0}) : 1.0;
+    r.internal_length = internal_length_from_grains(d50, level);
+  }
+  if (j.contains("kernel"))
+    r.kernel = f::choice<NonlocalKernel>(j["kernel"], p + "/kernel",
+                                         {{"gauss", NonlocalKernel::gauss}, {"galavi_schweiger", NonlocalKernel::galavi_schweiger}});
+  if (j.contains("averaged"))
+    r.quantity = f::choice<NonlocalQuantity>(j["averaged"], p + "/averaged",
+                                             {{"void_ratio_increments", NonlocalQuantity::void_ratio_increments},
+                                              {"void_ratio", NonlocalQuantity::void_ratio}});
+  if (j.contains("over_nonlocal")) r.over_nonlocal = f::number(j["over_nonlocal"], p + "/over_nonlocal", {1.0, 4.0});
+  if (j.contains("every_steps")) r.every = static_cast<int>(f::integer(j["every_steps"], p + "/every_steps", 1, 100000));
+  return r;
 }
 
 FootingSpec read_footing(const json& j, const std::string& p) {
@@ -258,7 +289,8 @@ void check_symmetric(const Scene& s) {
 Scene parse_scene(const std::string& json_text, const std::string& file) {
   const json j = f::parse(json_text, "", "the scene");
   f::allow_keys(j, {"name", "description", "grid", "materials", "bodies", "initial_stress", "gravity", "walls",
-                    "surcharge_kPa", "footing", "quasi_static", "solver", "stop", "output"},
+                    "surcharge_kPa", "confining_pressure_kPa", "footing", "quasi_static", "solver", "regularisation",
+                    "stop", "output"},
                 "");
   const std::string dir = file.empty() ? "" : std::filesystem::path(file).parent_path().string();
   Scene s;
@@ -269,11 +301,13 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   for (const char* k : {"grid", "materials", "bodies", "stop"})
     if (!j.contains(k)) f::fail("", std::string("'") + k + "' is required");
 
-  f::allow_keys(j["grid"], {"cell_size", "cells_above", "follow_footing"}, "/grid");
+  f::allow_keys(j["grid"], {"cell_size", "cells_above", "cells_beside", "follow_footing"}, "/grid");
   if (!j["grid"].contains("cell_size")) f::fail("/grid", "'cell_size' is required");
   s.cell_size = f::number(j["grid"]["cell_size"], "/grid/cell_size", f::positive(), "m");
   if (j["grid"].contains("cells_above"))
     s.cells_above = static_cast<int>(f::integer(j["grid"]["cells_above"], "/grid/cells_above", 2, 1000));
+  if (j["grid"].contains("cells_beside"))
+    s.cells_beside = static_cast<int>(f::integer(j["grid"]["cells_beside"], "/grid/cells_beside", 0, 1000));
   const bool follow_footing =
       j["grid"].contains("follow_footing") && f::boolean(j["grid"]["follow_footing"], "/grid/follow_footing");
 
@@ -285,31 +319,46 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   if (j.contains("gravity")) s.gravity = f::number(j["gravity"], "/gravity", {0.0, 1000.0}, "m/s^2");
   if (j.contains("initial_stress")) {
     const json& is = j["initial_stress"];
-    f::allow_keys(is, {"type", "K0"}, "/initial_stress");
-    const std::string type = is.contains("type") ? f::string(is["type"], "/initial_stress/type") : "geostatic";
-    if (type != "geostatic" && type != "zero") f::fail("/initial_stress/type", "'" + type + "' is not one of geostatic, zero");
-    s.geostatic = type == "geostatic";
-    if (is.contains("K0")) s.K0 = f::number(is["K0"], "/initial_stress/K0", {0.0, 5.0, true, false});
+    f::allow_keys(is, {"type", "K0", "p_kPa"}, "/initial_stress");
+    s.initial_stress = is.contains("type") ? f::choice<InitialStress>(is["type"], "/initial_stress/type",
+                                                                        {{"geostatic", InitialStress::geostatic},
+                                                                         {"zero", InitialStress::zero},
+                                                                         {"isotropic", InitialStress::isotropic}})
+                                           : InitialStress::geostatic;
+    if (is.contains("K0")) {
+      if (s.initial_stress != InitialStress::geostatic) f::fail("/initial_stress/K0", "only with type 'geostatic'");
+      s.K0 = f::number(is["K0"], "/initial_stress/K0", {0.0, 5.0, true, false});
+    }
+    if (s.initial_stress == InitialStress::isotropic) {
+      if (!is.contains("p_kPa")) f::fail("/initial_stress", "type 'isotropic' needs 'p_kPa'");
+      s.initial_p = f::number(is["p_kPa"], "/initial_stress/p_kPa", {0.0, 1e5, true, false}, "kPa");
+    } else if (is.contains("p_kPa")) {
+      f::fail("/initial_stress/p_kPa", "only with type 'isotropic'");
+    }
   }
   if (j.contains("walls")) {
     f::allow_keys(j["walls"], {"base", "sides"}, "/walls");
-    if (j["walls"].contains("base")) {
-      const std::string base = f::string(j["walls"]["base"], "/walls/base");
-      if (base != "fixed" && base != "none") f::fail("/walls/base", "'" + base + "' is not one of fixed, none");
-      s.base_fixed = base == "fixed";
-    }
-    if (j["walls"].contains("sides")) {
-      s.sides = f::choice<SideWall>(j["walls"]["sides"], "/walls/sides",
-                                    {{"smooth", SideWall::smooth}, {"fixed", SideWall::fixed}, {"none", SideWall::none}});
-    }
+    const auto wall = [&](const char* key, WallKind& kind) {
+      if (j["walls"].contains(key))
+        kind = f::choice<WallKind>(j["walls"][key], std::string("/walls/") + key,
+                                   {{"smooth", WallKind::smooth}, {"fixed", WallKind::fixed}, {"none", WallKind::none}});
+    };
+    wall("base", s.base);
+    wall("sides", s.sides);
   }
   if (j.contains("surcharge_kPa")) s.surcharge = f::number(j["surcharge_kPa"], "/surcharge_kPa", {0.0, 1e5}, "kPa");
+  if (j.contains("confining_pressure_kPa")) {
+    s.confining_pressure = f::number(j["confining_pressure_kPa"], "/confining_pressure_kPa", {0.0, 1e5}, "kPa");
+    if (s.sides != WallKind::none && s.confining_pressure > 0)
+      f::fail("/confining_pressure_kPa", "loads the soil's sides: needs /walls/sides 'none'");
+  }
   if (j.contains("footing")) s.footing = read_footing(j["footing"], "/footing");
   if (j.contains("quasi_static")) {
     if (!s.footing) f::fail("/quasi_static", "needs a /footing (the check compares kinetic energy with its work)");
     s.quasi_static = read_quasi_static(j["quasi_static"], "/quasi_static");
   }
   if (j.contains("solver")) s.solver = read_solver(j["solver"], "/solver");
+  if (j.contains("regularisation")) s.solver.regularisation = read_regularisation(j["regularisation"], "/regularisation");
   s.solver.gravity = s.gravity;
   if (follow_footing && !s.footing) f::fail("/grid/follow_footing", "needs a /footing (the rows follow its base)");
   s.solver.grid_follows_footing = follow_footing;

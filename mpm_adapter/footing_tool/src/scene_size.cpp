@@ -15,13 +15,13 @@ namespace f = acst::common::fields;
 
 namespace {
 
-// Bytes a particle costs: its arrays (Particles: 25 doubles, the state variables, the material
+// Bytes a particle costs: its arrays (Particles: 28 doubles, the state variables, the material
 // index; the footing base's friction: 1 double), their copy in a checkpoint's buffer, the step's
 // shape-function cache and mapped velocities (2 ints, 18 doubles), the footing contact (a list
 // entry, at most one per particle), the fields of a frame or contour figure (8 doubles), the
 // peak snapshot (4 doubles) and a frame's text (about 400 characters).
 double bytes_per_particle(int state_size, bool footing) {
-  const double arrays = 8.0 * (26 + state_size) + 4.0;
+  const double arrays = 8.0 * (29 + state_size) + 4.0;
   return 2.0 * arrays + 8.0 + 8.0 * 18 + (footing ? Footing::bytes_per_touch : 0.0) + 8.0 * 8 + 8.0 * 4 + 400.0;
 }
 
@@ -94,7 +94,8 @@ GridExtent grid_extent(const Scene& s) {
     g.y_min = std::min(g.y_min, b.y_min), g.y_max = std::max(g.y_max, b.y_max);
   }
   const double h = s.cell_size;
-  g.nodes_x = std::round((g.x_max - g.x_min) / h) + 2 * GridExtent::margin + 1;
+  g.cells_left = GridExtent::margin + s.cells_beside;
+  g.nodes_x = std::round((g.x_max - g.x_min) / h) + 2.0 * g.cells_left + 1;
   const double cells_y = std::round((g.y_max - g.y_min) / h);
   g.nodes_y = cells_y + GridExtent::margin + s.cells_above + 1;
   // Rows that follow a footing get closer as it settles: rows are added above so that the

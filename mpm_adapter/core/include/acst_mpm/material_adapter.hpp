@@ -64,27 +64,36 @@ class AbiMaterial {
   // update ended at the material's pressure floor (the library reset the point to an isotropic
   // p_min: soil in tension or at a free surface, without stiffness; never for the verification
   // kinds, which have no floor).
+  // `offset`: the nonlocal regularisation's offsets of the point (nonlocal_size() doubles: its
+  // averaged quantities minus its own; acst.h, "Nonlocal regularisation"), or null for the local
+  // model.
   acst_status update(double* stress, double* statev, const double* L, double dt, bool& stress_free,
-                     std::string* reproducer = nullptr) const;
+                     std::string* reproducer = nullptr, const double* offset = nullptr) const;
 
   // update() of n <= batch_size particles at once, their stress, state and L 6, state_size and 4
   // doubles apart: one acst_update_rotated_batch call (the library updates points of the common
   // kind together in SIMD registers, with the same numbers), then update()'s retries for the
   // particles it failed. The same numbers as n calls of update(). stress_free: n flags. Returns
   // the first failing particle's index (n if none), its status in `failure` and, where asked,
-  // its reproducer.
+  // its reproducer. `offset`: nonlocal_size() doubles a point, or null.
   static constexpr std::size_t batch_size = 16;
   std::size_t update_batch(std::size_t n, double* stress, double* statev, const double* L, double dt, int* stress_free,
-                           acst_status& failure, std::string* reproducer = nullptr) const;
+                           acst_status& failure, std::string* reproducer = nullptr,
+                           const double* offset = nullptr) const;
+
+  // The quantities the material takes nonlocally (0 for the verification kinds, 1 for the sand:
+  // its void ratio) and a point's local values of them.
+  int nonlocal_size() const { return nonlocal_size_; }
+  void nonlocal_local(double* out, const double* stress, const double* statev) const;
 
  private:
   // What update() does after acst_update_rotated failed: turn, update, subdivide.
   acst_status retry(double* stress, double* statev, const double* Q, const double* de, bool& stress_free,
-                    std::string* reproducer) const;
+                    std::string* reproducer, const double* offset) const;
 
   std::string name_;
   std::unique_ptr<acst_model, void (*)(acst_model*)> model_;
-  int state_size_ = 0;
+  int state_size_ = 0, nonlocal_size_ = 0;
 };
 
 }  // namespace acst::mpm

@@ -16,7 +16,14 @@ struct Particles {
   std::vector<double> strain;   // accumulated small strain, 3 per particle (xx yy xy tensor)
   std::vector<double> statev;   // state_size per particle
   std::vector<double> surcharge_length;  // top-edge length loaded by the surcharge (0: none)
+  // Side length loaded by the confining pressure (undeformed; + on a left side, pushed toward +x,
+  // - on a right one; 0: none).
+  std::vector<double> side_length;
   std::vector<double> wave_speed;
+  // The nonlocal regularisation's state (docs/mpm.md, "Nonlocal regularisation"): the averaged
+  // void ratio minus the particle's own, handed to its material with every update (0 while the
+  // model is local), and its own void ratio at the last averaging.
+  std::vector<double> void_ratio_offset, void_ratio_averaged;
   std::vector<int> material;    // index into Simulation::materials
   std::vector<int> stress_free;  // 1 while the material holds it at its pressure floor (docs/mpm.md)
   // Particles whose history is recorded (output/particle_histories), and per each its material

@@ -1,5 +1,8 @@
 #pragma once
-// The MPM solver's settings (the scene's /solver, /gravity and /grid/follow_footing; docs/mpm.md).
+// The MPM solver's settings (the scene's /solver, /gravity, /grid/follow_footing and
+// /regularisation; docs/mpm.md).
+#include "acst_mpm/nonlocal_average.hpp"
+
 namespace acst::mpm {
 
 enum class ParticleUpdate { FLIP, PIC, XPIC };
@@ -13,6 +16,23 @@ enum class StressUpdate { average, first, last };
 // The particles' dilation rates as the velocity field gives them, or each cell's mean (against
 // volumetric locking at several particles per cell; docs/mpm.md, "Volumetric locking").
 enum class VolumetricAveraging { none, cell };
+
+// What the sand's regularisation averages (docs/mpm.md, "Nonlocal regularisation"): the changes
+// of the void ratio between averagings, summed into each particle's nonlocal void ratio (its
+// initial value its own), or the void ratio itself.
+enum class NonlocalQuantity { void_ratio_increments, void_ratio };
+
+// The sand's nonlocal regularisation: its internal length l (m; 0: the local model), the kernel,
+// what is averaged, the over-nonlocal factor m (the state parameter takes (1 - m) e + m e_mean:
+// m = 1 the plain average, m > 1 Vermeer & Brinkgreve's over-nonlocal form) and every how many
+// steps.
+struct Regularisation {
+  double internal_length = 0.0;
+  NonlocalKernel kernel = NonlocalKernel::gauss;
+  NonlocalQuantity quantity = NonlocalQuantity::void_ratio_increments;
+  double over_nonlocal = 1.0;
+  int every = 20;
+};
 
 struct Settings {
   double cfl = 0.5;
@@ -28,6 +48,7 @@ struct Settings {
   double mass_scaling = 1.0;      // inertial mass x this factor (weight unchanged)
   double gravity = 0.0;           // m/s^2, acting in -y
   int threads = 0;                // 0: OpenMP default
+  Regularisation regularisation;
 };
 
 }  // namespace acst::mpm

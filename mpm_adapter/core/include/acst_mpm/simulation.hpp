@@ -15,6 +15,7 @@
 #include "acst_mpm/footing.hpp"
 #include "acst_mpm/grid.hpp"
 #include "acst_mpm/material_adapter.hpp"
+#include "acst_mpm/nonlocal_average.hpp"
 #include "acst_mpm/particles.hpp"
 #include "acst_mpm/settings.hpp"
 #include "acst_mpm/step_scratch.hpp"
@@ -33,6 +34,7 @@ struct Boundaries {
   Walls walls;
   Footing footing;         // inactive unless the scene has one
   double surcharge = 0.0;  // kPa on the particles with a surcharge_length
+  double confining_pressure = 0.0;  // kPa on the particles with a side_length (a biaxial test's sides)
   // Half domain: the left wall is the footing's centre line and the soil beyond it this soil's
   // mirror image, so the footing's V and the kinetic energy are reported doubled, H and M zero.
   bool symmetric_half = false;
@@ -81,6 +83,7 @@ class Simulation {
 
  private:
   // The steps of step(), in the order docs/mpm.md gives.
+  void regularise();
   void refresh_time_step();
   void compute_shape_functions();
   void map_mass_and_momentum();
@@ -93,6 +96,7 @@ class Simulation {
   void advance_boundaries();
 
   void prepare();
+  void local_void_ratios(std::vector<double>& out) const;
   void follow_footing();
   void velocity_gradients_averaged(const double* vx, const double* vy);
   void refresh_wave_speeds();
@@ -116,6 +120,8 @@ class Simulation {
   } rows_;
   Clock clock_;
   std::array<Reaction, reaction_sets> reaction_{};
+  NonlocalAverage nonlocal_;  // inactive unless the regularisation has an internal length
+  std::vector<double> nonlocal_value_, nonlocal_mean_;
   StepScratch work_;  // owned: a copy of a Simulation has its own
 };
 

@@ -7,12 +7,12 @@
 
 namespace acst::mpm {
 
-enum class SideWall { none, smooth, fixed };
+enum class WallKind { none, smooth, fixed };
 
 struct Walls {
   double left = 0.0, right = 0.0, base = 0.0;
-  bool base_fixed = true;  // false: no base wall
-  SideWall left_side = SideWall::smooth, right_side = SideWall::smooth;
+  WallKind base_wall = WallKind::fixed;  // none, smooth (it slides) or fixed (no slip)
+  WallKind left_side = WallKind::smooth, right_side = WallKind::smooth;
 
   // Folds the mirror image onto the interior nodes (odd components change sign), then mirrors
   // back to the exterior nodes. An odd velocity component is zero on the wall; a smooth wall

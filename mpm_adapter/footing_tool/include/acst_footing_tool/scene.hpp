@@ -65,17 +65,24 @@ struct OutputSpec {
   std::vector<ParticleTrack> particle_histories;
 };
 
+// The stress the particles start from: none, from the overburden (sigma_v, sigma_h = sigma_zz =
+// K0 sigma_v), or isotropic (a biaxial test's consolidation).
+enum class InitialStress { zero, geostatic, isotropic };
+
 struct Scene {
   std::string name, file, text;  // text: the canonical JSON, stored in checkpoints
   double cell_size = 0;
   int cells_above = 6;           // empty cells kept above the highest body (heave room)
+  int cells_beside = 0;          // empty cells beside the bodies, more than the stencil's (free sides)
   std::vector<MaterialSpec> materials;
   std::vector<BodySpec> bodies;
   double gravity = 0, K0 = 0.5;
-  bool geostatic = false;        // initial stress from the overburden, sigma_h = K0 sigma_v
-  bool base_fixed = true;              // walls/base: "fixed" or "none"
-  SideWall sides = SideWall::smooth;   // walls/sides: "smooth", "fixed" or "none"
+  InitialStress initial_stress = InitialStress::zero;
+  double initial_p = 0;          // kPa, of InitialStress::isotropic
+  WallKind base = WallKind::fixed;     // walls/base: "fixed", "smooth" or "none"
+  WallKind sides = WallKind::smooth;   // walls/sides: "smooth", "fixed" or "none"
   double surcharge = 0;          // kPa on the top surface outside the footing
+  double confining_pressure = 0; // kPa on the soil's left and right sides (a biaxial test)
   std::optional<FootingSpec> footing;
   QuasiStaticSpec quasi_static;
   Settings solver;

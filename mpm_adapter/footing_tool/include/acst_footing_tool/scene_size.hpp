@@ -16,6 +16,7 @@ Scene modelled_part(const Scene& scene);
 struct GridExtent {
   double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
   double nodes_x = 0, nodes_y = 0;  // whole numbers, in double
+  int cells_left = 0;               // cells left of the bodies (the margin and /grid/cells_beside)
   static constexpr int margin = 3;  // cells beyond the walls: the stencil reaches two
 };
 GridExtent grid_extent(const Scene& part);
