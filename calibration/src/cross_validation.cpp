@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using WallClock = std::chrono::steady_clock;
 
 // The description with only the experiments `keep` accepts, and without what would then refer
 // to nothing: type weights of types no longer used, group starts of groups no longer present, a
@@ -67,7 +67,7 @@ Fitted fit_description(const json& d, const FitSpec& parent, const std::string& 
   LeastSquaresProblem ls{p.start(), p.lower(), p.upper(), p.residual_count(),
                          [&](const std::vector<Eigen::VectorXd>& thetas) { return p.residuals(thetas); }};
   f.result = fit(ls, f.spec.optimizer);
-  std::vector<SimulationOutcome> outcomes;
+  std::vector<TestRunOutcome> outcomes;
   p.residuals(f.result.theta, outcomes);
   f.errors = experiment_errors(p, outcomes);
   return f;
@@ -180,8 +180,8 @@ double pooled_rms_normalised(const std::vector<ExperimentError>& errors) {
 }
 
 CrossValidation cross_validate(const json& description, const FitSpec& spec, const std::function<void(const std::string&)>& progress) {
-  const auto t0 = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  const auto t0 = WallClock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(WallClock::now() - t0).count(); };
   CrossValidation cv;
   const Fitted all = fit_description(subset(description, spec, [](const ExperimentSpec&) { return true; }), spec, spec.name);
   cv.all_data_cost = all.result.cost;
@@ -212,7 +212,7 @@ CrossValidation cross_validate(const json& description, const FitSpec& spec, con
     for (const ExperimentSpec& x : spec.experiments)
       if (in_fold(x) && std::find(groups.begin(), groups.end(), x.group) == groups.end()) groups.push_back(x.group);
     bool per_group = false;
-    for (const Variable& v : training.problem->variables()) per_group = per_group || !v.group.empty();
+    for (const FitVariable& v : training.problem->variables()) per_group = per_group || !v.group.empty();
     const auto& trained = training.spec.groups;
     std::map<std::string, ExperimentError> predicted;
     for (const std::string& g : groups) {

@@ -20,8 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<const SimulationOutcome*> view_of(const std::vector<SimulationOutcome>& outcomes) {
-  std::vector<const SimulationOutcome*> v;
+std::vector<const TestRunOutcome*> view_of(const std::vector<TestRunOutcome>& outcomes) {
+  std::vector<const TestRunOutcome*> v;
   for (const auto& o : outcomes) v.push_back(&o);
   return v;
 }
@@ -76,7 +76,7 @@ std::string run_gnuplot_in(const fs::path& dir, const std::string& script) {
 
 }  // namespace
 
-std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<SimulationOutcome>& outcomes) {
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<TestRunOutcome>& outcomes) {
   const auto view = view_of(outcomes);
   std::vector<ExperimentError> errors;
   double total = 0.0;
@@ -87,7 +87,7 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
     e.test = x.test;
     e.group = x.group;
     e.weight = experiment_weight(problem.spec(), k);
-    for (std::size_t sim : problem.simulations_of(k))
+    for (std::size_t sim : problem.test_runs_of(k))
       if (!outcomes[sim].ok) {
         e.ok = false;
         if (e.message.empty()) e.message = outcomes[sim].message;
@@ -122,7 +122,7 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
 json fitted_material(const Problem& problem, const Eigen::VectorXd& theta, const std::string& group) {
   json m = problem.spec().material;
   const Parameters p = problem.parameters(theta, group);
-  for (const Variable& v : problem.variables()) m["parameters"][v.parameter] = p.*parameter_info(v.parameter)->member;
+  for (const FitVariable& v : problem.variables()) m["parameters"][v.parameter] = p.*parameter_info(v.parameter)->member;
   return m;
 }
 
@@ -163,7 +163,7 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
   json fixed = json::object();
   for (const auto& item : spec.material["parameters"].items()) {
     bool fitted = false;
-    for (const Variable& v : vars) fitted = fitted || v.parameter == item.key();
+    for (const FitVariable& v : vars) fitted = fitted || v.parameter == item.key();
     if (!fitted) fixed[item.key()] = item.value();
   }
   r["fixed"] = fixed;
@@ -195,7 +195,7 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
   const long evaluations = fit.evaluations;
   r["work"] = {{"objective_evaluations", evaluations},
                {"simulations", c.simulations.load()},
-               {"simulations_per_evaluation", problem.simulations().size()},
+               {"simulations_per_evaluation", problem.test_runs().size()},
                {"failed_simulations", c.failed.load()},
                {"increments", c.increments.load()},
                {"newton_iterations", c.iterations.load()},
@@ -309,7 +309,7 @@ bool is_fit_output_name(const std::string& fit_name, const std::string& entry) {
   return entry == "curves" || entry.rfind(fit_name + "_", 0) == 0 || common::is_temporary_name(entry);
 }
 
-std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit, const std::vector<SimulationOutcome>& outcomes,
+std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit, const std::vector<TestRunOutcome>& outcomes,
                                        const RunInfo& info, const std::string& directory, bool plot) {
   const FitSpec& spec = problem.spec();
   common::require_own_folder(directory, [&](const std::string& e) { return is_fit_output_name(spec.name, e); });
@@ -321,7 +321,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
   try {
     add(spec.name + "_parameters.json", fitted_material(problem, fit.theta, spec.reference_group).dump(2) + "\n");
     bool per_group = false;
-    for (const Variable& v : problem.variables()) per_group = per_group || !v.group.empty();
+    for (const FitVariable& v : problem.variables()) per_group = per_group || !v.group.empty();
     if (per_group)
       for (const std::string& g : spec.groups)
         add(spec.name + "_parameters_" + g + ".json", fitted_material(problem, fit.theta, g).dump(2) + "\n");
@@ -342,7 +342,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
         for (std::size_t i = 0; i < s.x.size(); ++i) {
           const double sim = problem.simulated(k, s, i, view);
           if (table) {
-            const Simulation& row_sim = problem.simulations()[problem.simulations_of(k)[i]];
+            const TestRun& row_sim = problem.test_runs()[problem.test_runs_of(k)[i]];
             pts << s.x[i] << ',' << row_sim.bedding_angle_deg << ',' << row_sim.b << ',' << row_sim.sigma3_kPa << ','
                 << row_sim.void_ratio << ',' << s.measured[i] << ',' << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
           } else {
@@ -352,7 +352,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
       }
       add(fs::path("curves") / (x.id + "_points.csv"), pts.str());
       if (!table) {
-        const SimulationOutcome& o = outcomes[problem.simulations_of(k).front()];
+        const TestRunOutcome& o = outcomes[problem.test_runs_of(k).front()];
         std::ostringstream c;
         c << "eps_a_pct," << (x.stress_measure == StressMeasure::q_kPa ? "q_kPa" : "stress_ratio") << ",eps_v_pct\n";
         for (std::size_t i = 0; i < o.eps_a_pct.size(); ++i)

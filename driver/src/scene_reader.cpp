@@ -1,4 +1,4 @@
-// Scene JSON -> Scene: the top level (material, initial state, solver, lab data, output).
+// Scene JSON -> ElementScene: the top level (material, initial state, solver, lab data, output).
 // Steps are read in step_reader.cpp. Every error names the JSON path.
 #include <Eigen/SVD>
 #include <filesystem>
@@ -33,7 +33,7 @@ auto with_prefix(const std::string& prefix, Fn&& fn) -> decltype(fn()) {
 }
 
 // "material": {"file": "...", "integrator": {...}} or {"model", "parameters", "integrator"}.
-void read_material(const json& j, const std::string& path, const std::string& base_dir, Scene& scene) {
+void read_material(const json& j, const std::string& path, const std::string& base_dir, ElementScene& scene) {
   const MaterialObject m = read_material_object(j, path, base_dir);
   const json& effective = m.object;
   const std::string& prefix = m.path;
@@ -52,7 +52,7 @@ void read_material(const json& j, const std::string& path, const std::string& ba
   scene.material_json = effective;
 }
 
-void read_initial_state(const json& j, const std::string& path, Scene& scene) {
+void read_initial_state(const json& j, const std::string& path, ElementScene& scene) {
   f::allow_keys(j, {"stress", "confining_pressure", "void_ratio", "relative_density_pct", "bedding_angle_deg",
                     "deposition_direction", "fabric", "H", "substep_hint"},
                 path);
@@ -115,7 +115,7 @@ void read_solver(const json& j, const std::string& path, SolverSettings& s) {
   if (j.contains("max_cutbacks")) s.max_cutbacks = f::integer(j["max_cutbacks"], path + "/max_cutbacks", 1, 1000000000);
 }
 
-void read_output(const json& j, const std::string& path, OutputSpec& o) {
+void read_output(const json& j, const std::string& path, ElementOutputSpec& o) {
   f::allow_keys(j, {"directory", "name", "every", "plot"}, path);
   if (j.contains("directory")) {
     o.directory = f::string(j["directory"], path + "/directory");
@@ -128,7 +128,7 @@ void read_output(const json& j, const std::string& path, OutputSpec& o) {
   if (j.contains("plot")) o.plot = f::boolean(j["plot"], path + "/plot");
 }
 
-void read_lab_data(const json& j, const std::string& path, const std::string& base_dir, Scene& scene) {
+void read_lab_data(const json& j, const std::string& path, const std::string& base_dir, ElementScene& scene) {
   std::vector<std::pair<std::string, std::string>> names;  // (json path, file name)
   if (j.is_string()) {
     names.emplace_back(path, j.get<std::string>());
@@ -178,12 +178,12 @@ void check_rows_complete(const ControlRows& rows, const Material& material, cons
                     " of 6 with an elastic stiffness): every component must be controlled or constrained");
 }
 
-Scene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
+ElementScene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
   const json j = f::parse(text, "", "the scene");
   f::allow_keys(j, {"description", "material", "initial_state", "steps", "solver", "lab_data", "output"}, "");
   for (const char* key : {"material", "initial_state", "steps"})
     if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
-  Scene scene;
+  ElementScene scene;
   scene.base_dir = base_dir;
   if (j.contains("description")) f::string(j["description"], "/description");
   read_material(j["material"], "/material", base_dir, scene);
@@ -204,7 +204,7 @@ Scene parse_scene(const std::string& text, const std::string& base_dir, const st
   return scene;
 }
 
-Scene read_scene(const std::string& path) {
+ElementScene read_scene(const std::string& path) {
   std::string text;
   try {
     text = common::read_input_file(path);
@@ -212,7 +212,7 @@ Scene read_scene(const std::string& path) {
     throw common::InputError(std::string("cannot read the scene file: ") + e.what());
   }
   const std::filesystem::path p(path);
-  Scene s = parse_scene(text, p.parent_path().string(), p.stem().string());
+  ElementScene s = parse_scene(text, p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

@@ -32,7 +32,7 @@ struct ExperimentError {
   std::vector<AxisError> axes;
 };
 
-std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<SimulationOutcome>& outcomes);
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<TestRunOutcome>& outcomes);
 
 struct RunInfo {
   double total_seconds = 0.0;  // from reading the description to the end of the fit (before writing)
@@ -56,7 +56,7 @@ bool is_fit_output_name(const std::string& fit_name, const std::string& entry);
 // only hold an earlier result of the same fit (checked first by the tool, see is_fit_output_name).
 // Returns warnings (gnuplot missing or failed); throws std::runtime_error when a file cannot be written.
 std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit,
-                                       const std::vector<SimulationOutcome>& outcomes, const RunInfo& info,
+                                       const std::vector<TestRunOutcome>& outcomes, const RunInfo& info,
                                        const std::string& directory, bool plot);
 
 }  // namespace acst::calibration
