@@ -36,7 +36,7 @@ json subset(const json& d, const FitSpec& spec, const std::function<bool(const E
     if (keep(spec.experiments[i])) {
       t["experiments"].push_back(d["experiments"][i]);
       groups.insert(spec.experiments[i].group);
-      types.insert(spec.experiments[i].test);
+      types.insert(name_of(spec.experiments[i].test));
     }
   if (t.contains("weights") && t["weights"].contains("types"))
     for (const auto& [type, w] : d["weights"]["types"].items())
@@ -91,9 +91,9 @@ json errors_json(const std::vector<ExperimentError>& errors) {
   for (const ExperimentError& e : errors) {
     json axes = json::array();
     for (const AxisError& a : e.axes)
-      axes.push_back({{"axis", a.axis}, {"points", a.points}, {"rms", std::isfinite(a.rms) ? json(a.rms) : json(nullptr)},
+      axes.push_back({{"axis", name_of(a.axis)}, {"points", a.points}, {"rms", std::isfinite(a.rms) ? json(a.rms) : json(nullptr)},
                       {"rms_normalised", a.rms_normalised}, {"mean", std::isfinite(a.mean) ? json(a.mean) : json(nullptr)}});
-    out.push_back({{"id", e.id}, {"test", e.test}, {"group", e.group}, {"ok", e.ok}, {"message", e.message}, {"axes", axes}});
+    out.push_back({{"id", e.id}, {"test", name_of(e.test)}, {"group", e.group}, {"ok", e.ok}, {"message", e.message}, {"axes", axes}});
   }
   return out;
 }
@@ -106,8 +106,13 @@ std::string num(double v, int digits = 3) {
   return s.str();
 }
 
-std::string axis_unit(const std::string& axis) {
-  return axis == "volumetric" ? "e_v %" : axis == "phi" ? "phi deg" : "stress";
+const char* axis_unit(Axis axis) {
+  switch (axis) {
+    case Axis::stress: break;
+    case Axis::volumetric: return "e_v %";
+    case Axis::phi: return "phi deg";
+  }
+  return "stress";
 }
 
 std::string markdown(const json& r, const CrossValidation& cv) {

@@ -51,12 +51,12 @@ std::string error_of(const std::string& text) {
 TEST(FitSpec, ValidDescriptionAndNormalisedWeights) {
   const FitSpec s = parse_fit_spec(description(), base_dir, "t");
   ASSERT_EQ(s.experiments.size(), 4u);
-  EXPECT_EQ(s.experiments[0].test, "drained_triaxial_compression");  // from the file's kind: TC
-  EXPECT_EQ(s.experiments[2].test, "plane_strain_compression");      // kind: PSC
-  EXPECT_DOUBLE_EQ(s.experiments[0].sigma3_kPa, 98.0);                // from the file's header
+  EXPECT_EQ(s.experiments[0].test, TestType::drained_triaxial_compression);  // from the file's kind: TC
+  EXPECT_EQ(s.experiments[2].test, TestType::plane_strain_compression);      // kind: PSC
+  EXPECT_DOUBLE_EQ(s.experiments[0].sigma3_kPa, 98.0);                       // from the file's header
   EXPECT_DOUBLE_EQ(s.experiments[0].void_ratio, 0.671);
   EXPECT_EQ(s.groups, (std::vector<std::string>{"a", "b"}));
-  EXPECT_NEAR(s.type_weights.at("drained_triaxial_compression"), 0.5, 1e-15);
+  EXPECT_NEAR(s.type_weights.at(TestType::drained_triaxial_compression), 0.5, 1e-15);
   double total = 0.0;
   for (std::size_t k = 0; k < s.experiments.size(); ++k) total += experiment_weight(s, k);
   EXPECT_NEAR(total, 1.0, 1e-14);

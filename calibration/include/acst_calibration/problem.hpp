@@ -32,7 +32,7 @@ struct FitVariable {
 
 // Measured points of one axis of one experiment, inside its strain range.
 struct Series {
-  std::string axis;  // "stress" (sigma1'/sigma3' or q) or "volumetric" (eps_v %) or "phi" (deg)
+  Axis axis = Axis::stress;
   std::vector<double> x;       // axial strain % (curves) or table row index (tables)
   std::vector<double> measured;
   double scale = 1.0;          // normalising range
@@ -115,9 +115,10 @@ class Problem {
   mutable WorkCounters counters_;
 };
 
-// Normalising range of a measured series: max - min, floored at `floor_fraction` of max |value|
-// (and at an absolute floor for the axis) so that flat series do not blow up.
-double series_scale(const std::vector<double>& measured, const std::string& axis);
+// Normalising range of a measured series: max - min, floored at 5 % of max |value| and at an
+// absolute floor for the axis (and, on the stress axis, its measure) so that flat series do not
+// blow up.
+double series_scale(const std::vector<double>& measured, Axis axis, StressMeasure measure);
 
 // Peak friction angle (deg) of a stress state: asin((s1 - s3)/(s1 + s3)) over principal stresses.
 double friction_angle_deg(const Sym& stress);

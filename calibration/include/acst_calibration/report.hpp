@@ -14,7 +14,7 @@
 namespace acst::calibration {
 
 struct AxisError {
-  std::string axis;  // stress, volumetric, phi
+  Axis axis = Axis::stress;
   int points = 0;
   double rms_normalised = 0.0;  // RMS of (simulated - measured) / scale
   double rms = 0.0;             // RMS in the axis' unit (sigma1'/sigma3', kPa, %, deg)
@@ -24,7 +24,9 @@ struct AxisError {
 };
 
 struct ExperimentError {
-  std::string id, test, group;
+  std::string id;
+  TestType test = TestType::drained_triaxial_compression;
+  std::string group;
   bool ok = true;
   std::string message;     // of a failed run
   double weight = 0.0;     // normalised

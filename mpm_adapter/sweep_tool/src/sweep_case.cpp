@@ -94,12 +94,12 @@ json case_fingerprint(const SweepCase& c) {
   return {{"scene", json::parse(c.scene.text)}, {"materials", materials}};
 }
 
-ordered_json case_row(const SweepCase& c, const std::string& dir, const std::string& status, const std::string& message,
+ordered_json case_row(const SweepCase& c, const std::string& dir, CaseStatus status, const std::string& message,
                       const std::vector<double>& load_at_S_over_B) {
   const Scene& s = c.scene;
   std::string groups;
   for (const std::string& g : c.groups) groups += (groups.empty() ? "" : " ") + g;
-  ordered_json row = {{"case", c.name}, {"group", groups}, {"status", status}};
+  ordered_json row = {{"case", c.name}, {"group", groups}, {"status", name_of(status)}};
   for (const auto& item : c.varied.items()) row[item.key()] = item.value();
   const BodySpec& body = s.bodies.front();
   for (const MaterialSpec& m : s.materials)
@@ -126,7 +126,7 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
   const double end_S_over_B = curve.S_over_B.empty() ? 0.0 : curve.S_over_B.back();
   // A failed run's last moments (an ejected particle, a material failure) throw the contact load
   // about by several times: the rows within failure_approach of its end do not count.
-  if (status == "failed") {
+  if (status == CaseStatus::failed) {
     std::size_t keep = 0;
     while (keep < curve.S_over_B.size() && curve.S_over_B[keep] <= end_S_over_B - failure_approach_S_over_B) ++keep;
     for (auto* v : {&curve.S_over_B, &curve.V, &curve.H, &curve.M, &curve.q}) v->resize(keep);
@@ -152,7 +152,7 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
     row["peak_reached"] = curve.V.back() < 0.98 * *peak;
   }
   const std::string summary_file = (fs::path(dir) / "summary.json").string();
-  if (status == "done" && fs::exists(summary_file)) {
+  if (status == CaseStatus::done && fs::exists(summary_file)) {
     const json summary = read_json_file(summary_file);
     for (const char* when : {"at_peak", "at_end"})
       if (summary.contains("sides") && summary["sides"].contains(when))
@@ -188,11 +188,12 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
 
   Scene scene = c.scene;
   if (options.threads > 0) scene.solver.threads = options.threads;
-  std::string status = "done", message;
+  CaseStatus status = CaseStatus::done;
+  std::string message;
   try {
     run_scene(scene, run);
   } catch (const std::exception& e) {
-    status = "failed";
+    status = CaseStatus::failed;
     message = e.what();
   }
   // The run's message names files by where they were written; they are read where they end up.
