@@ -9,9 +9,9 @@
 
 #include "acst_calibration/cross_validation.hpp"
 #include "acst_calibration/fit_spec.hpp"
-#include "acst_common/files.hpp"
 #include "acst_common/cli.hpp"
 #include "acst_common/duration.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
@@ -63,7 +63,7 @@ int cross_validation_cli(const std::string& file, const common::CliArgs& cli, st
   try {
     spec = read_fit_spec(file);
     if (spec.folds.empty()) throw common::InputError("/cross_validation: required by --cross-validate (no folds are named)");
-    description = nlohmann::json::parse(common::read_input_file(file));
+    description = common::fields::read_json_file(file, "the fit description");
     if (cli.threads >= 0) spec.optimizer.threads = cli.threads;
     directory = cli.output.empty() ? spec.output_dir + "_cross_validation" : cli.output;
     common::require_own_folder(directory, [&](const std::string& e) { return is_cross_validation_output_name(spec.name, e); });

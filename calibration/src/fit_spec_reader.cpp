@@ -12,6 +12,7 @@
 #include "acst_calibration/fit_spec.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/name_table.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_driver/lab_data.hpp"
@@ -349,7 +350,8 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
   s.base_dir = base_dir;
   // The name starts every output file's name and reaches the overview's gnuplot script.
   s.name = j.contains("name") ? common::require_plain_stem(f::string(j["name"], "/name"), "/name")
-                              : common::require_plain_stem(default_name, "/name (not given; the description file's name would be used)");
+                              : common::require_plain_stem(default_name.empty() ? "fit" : default_name,
+                                                           "/name (not given; the description file's name would be used)");
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
 
   s.material = driver::read_material_object(j["material"], "/material", base_dir).object;
@@ -411,18 +413,12 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
 }  // namespace
 
 FitSpec parse_fit_spec(const std::string& text, const std::string& base_dir, const std::string& default_name) {
-  return parse(f::parse(text, "", "the fit description"), base_dir, default_name.empty() ? "fit" : default_name);
+  return parse(f::parse(text, "", "the fit description"), base_dir, default_name);
 }
 
 FitSpec read_fit_spec(const std::string& path) {
-  std::string text;
-  try {
-    text = common::read_input_file(path);
-  } catch (const common::InputError& e) {
-    throw common::InputError(std::string("cannot read the fit description: ") + e.what());
-  }
   const std::filesystem::path p(path);
-  FitSpec s = parse_fit_spec(text, p.parent_path().string(), p.stem().string());
+  FitSpec s = parse(f::read_json_file(path, "the fit description"), p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

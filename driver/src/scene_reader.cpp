@@ -7,6 +7,7 @@
 #include "acst/json_input.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/material_object.hpp"
@@ -178,8 +179,9 @@ void check_rows_complete(const ControlRows& rows, const Material& material, cons
                     " of 6 with an elastic stiffness): every component must be controlled or constrained");
 }
 
-ElementScene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
-  const json j = f::parse(text, "", "the scene");
+namespace {
+
+ElementScene scene_from_document(const json& j, const std::string& base_dir, const std::string& default_name) {
   f::allow_keys(j, {"description", "material", "initial_state", "steps", "solver", "lab_data", "output"}, "");
   for (const char* key : {"material", "initial_state", "steps"})
     if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
@@ -204,15 +206,15 @@ ElementScene parse_scene(const std::string& text, const std::string& base_dir, c
   return scene;
 }
 
+}  // namespace
+
+ElementScene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
+  return scene_from_document(f::parse(text, "", "the scene"), base_dir, default_name);
+}
+
 ElementScene read_scene(const std::string& path) {
-  std::string text;
-  try {
-    text = common::read_input_file(path);
-  } catch (const common::InputError& e) {
-    throw common::InputError(std::string("cannot read the scene file: ") + e.what());
-  }
   const std::filesystem::path p(path);
-  ElementScene s = parse_scene(text, p.parent_path().string(), p.stem().string());
+  ElementScene s = scene_from_document(f::read_json_file(path, "the scene file"), p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

@@ -133,7 +133,7 @@ TEST(FitSpec, NotJsonAndMissingFile) {
     read_fit_spec(base_dir + "/no_such_fit.json");
     FAIL() << "no error";
   } catch (const acst::common::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("cannot read"), std::string::npos);
+    EXPECT_EQ(std::string(e.what()).rfind("the fit description '" + base_dir + "/no_such_fit.json': cannot open: ", 0), 0u) << e.what();
   }
 }
 

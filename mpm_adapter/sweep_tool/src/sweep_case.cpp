@@ -9,6 +9,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_footing_tool/first_peak.hpp"
 #include "acst_footing_tool/runner.hpp"
@@ -68,14 +69,6 @@ json q_at(const LoadCurve& c, double x) {
 
 std::string load_at_column(double s) {
   return "q_at_S_over_B_" + common::fields::shown(s) + "_kPa";
-}
-
-json read_json_file(const std::string& path) {
-  try {
-    return common::fields::parse(common::read_input_file(path), "", "'" + path + "'");
-  } catch (const common::InputError& e) {
-    throw std::runtime_error(path + ": " + e.what());
-  }
 }
 
 }  // namespace
@@ -153,7 +146,7 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, CaseStatus sta
   }
   const std::string summary_file = (fs::path(dir) / "summary.json").string();
   if (status == CaseStatus::done && fs::exists(summary_file)) {
-    const json summary = read_json_file(summary_file);
+    const json summary = common::fields::read_json_file(summary_file, "the run's summary");
     for (const char* when : {"at_peak", "at_end"})
       if (summary.contains("sides") && summary["sides"].contains(when))
         for (const auto& item : summary["sides"][when].items()) {
@@ -179,7 +172,8 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
   // An interrupted run of this very case goes on; anything else there is an earlier case's. The
   // fingerprint lies beside the folder: acst_mpm starts a new run only in a folder of its own files.
   const std::string fingerprint_path = partial + ".json";
-  if (fs::exists(checkpoint) && fs::exists(fingerprint_path) && read_json_file(fingerprint_path) == fingerprint)
+  if (fs::exists(checkpoint) && fs::exists(fingerprint_path) &&
+      common::fields::read_json_file(fingerprint_path, "the case's fingerprint") == fingerprint)
     run.resume_from = checkpoint;
   else
     fs::remove_all(partial);
@@ -213,7 +207,7 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
 json read_case_record(const std::string& sweep_dir, const std::string& name) {
   const std::string path = (fs::path(case_folder(sweep_dir, name)) / sweep_case_record).string();
   if (!fs::exists(path)) return nullptr;
-  return read_json_file(path);
+  return common::fields::read_json_file(path, "the case record");
 }
 
 }  // namespace acst::mpm

@@ -196,7 +196,7 @@ TEST(SweepDescription, BadDescriptionsNameTheirJsonPath) {
        "give only one of path, paths"},
       {description(R"([{"name": "a", "group": ["ok", "../up"]}])"), "/cases/0/group/1"},
       {R"({"name": "t", "cases": [{"name": "a"}]})", "/cases/0: 'base' is required"},
-      {R"({"name": "t", "base": "/nonexistent/scene.json", "cases": [{"name": "a"}]})", "/base: cannot read the base scene"},
+      {R"({"name": "t", "base": "/nonexistent/scene.json", "cases": [{"name": "a"}]})", "/base: the base scene '/nonexistent/scene.json': cannot open: "},
       {description(R"([{"name": "a"}])", R"("gather": {"load_at_S_over_B": [-1]})"), "/gather/load_at_S_over_B/0"},
       {description(R"([{"name": "a"}])", R"("gather": {"case_figures": ["../x.png"]})"), "/gather/case_figures/0: '../x.png' is not a plain file stem"},
   };
