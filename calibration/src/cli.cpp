@@ -9,9 +9,9 @@
 
 #include "acst_calibration/cross_validation.hpp"
 #include "acst_calibration/fit_spec.hpp"
-#include "acst_common/files.hpp"
 #include "acst_common/cli.hpp"
 #include "acst_common/duration.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_calibration/least_squares.hpp"
 #include "acst_calibration/problem.hpp"
@@ -21,7 +21,7 @@ namespace acst::calibration {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using WallClock = std::chrono::steady_clock;
 
 void usage(std::ostream& o) {
   o << "Usage: acst_fit [--help] [--quiet] [--no-plot] [--output DIR] [--threads N] [--cross-validate] FIT.json\n"
@@ -63,7 +63,7 @@ int cross_validation_cli(const std::string& file, const common::CliArgs& cli, st
   try {
     spec = read_fit_spec(file);
     if (spec.folds.empty()) throw common::InputError("/cross_validation: required by --cross-validate (no folds are named)");
-    description = nlohmann::json::parse(common::read_input_file(file));
+    description = common::fields::read_json_file(file, "the fit description");
     if (cli.threads >= 0) spec.optimizer.threads = cli.threads;
     directory = cli.output.empty() ? spec.output_dir + "_cross_validation" : cli.output;
     common::require_own_folder(directory, [&](const std::string& e) { return is_cross_validation_output_name(spec.name, e); });
@@ -111,7 +111,7 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   const int threads = cli.threads;
 
   if (cli.flags.count("--cross-validate")) return cross_validation_cli(cli.inputs.front(), cli, out, err);
-  const auto t0 = Clock::now();
+  const auto t0 = WallClock::now();
   FitSpec spec;
   try {
     spec = read_fit_spec(file);
@@ -132,13 +132,13 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
   if (!quiet)
     err << "acst_fit: " << spec.name << ": " << problem->variables().size() << " values, " << spec.experiments.size()
-        << " experiments (" << problem->simulations().size() << " element tests per evaluation), "
+        << " experiments (" << problem->test_runs().size() << " element tests per evaluation), "
         << problem->residual_count() << " points, " << problem->threads() << " threads\n";
 
   LeastSquaresProblem ls{problem->start(), problem->lower(), problem->upper(), problem->residual_count(),
                          [&](const std::vector<Eigen::VectorXd>& thetas) { return problem->residuals(thetas); }};
   FitProgress progress = [&](const std::string& phase, int iteration, double cost, long evaluations) {
-    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double s = std::chrono::duration<double>(WallClock::now() - t0).count();
     err << "  [" << phase << "] ";
     if (phase == "design") err << spec.optimizer.design_points << " points";
     else err << "iteration " << iteration << " of at most " << spec.optimizer.max_iterations << ", cost " << cost;
@@ -152,14 +152,14 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     err << "acst_fit: " << file << ": " << e.what() << '\n';
     return 2;
   }
-  std::vector<SimulationOutcome> outcomes;
+  std::vector<TestRunOutcome> outcomes;
   problem->residuals(result.theta, outcomes);
   bool any_ok = false;
   for (const auto& o : outcomes) any_ok = any_ok || o.ok;
 
   RunInfo info;
   info.threads = problem->threads();
-  info.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  info.total_seconds = std::chrono::duration<double>(WallClock::now() - t0).count();
   try {
     for (const auto& w : write_outputs(*problem, result, outcomes, info, spec.output_dir, plot))
       err << "acst_fit: warning: " << w << '\n';

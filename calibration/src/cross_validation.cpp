@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using WallClock = std::chrono::steady_clock;
 
 // The description with only the experiments `keep` accepts, and without what would then refer
 // to nothing: type weights of types no longer used, group starts of groups no longer present, a
@@ -36,7 +36,7 @@ json subset(const json& d, const FitSpec& spec, const std::function<bool(const E
     if (keep(spec.experiments[i])) {
       t["experiments"].push_back(d["experiments"][i]);
       groups.insert(spec.experiments[i].group);
-      types.insert(spec.experiments[i].test);
+      types.insert(name_of(spec.experiments[i].test));
     }
   if (t.contains("weights") && t["weights"].contains("types"))
     for (const auto& [type, w] : d["weights"]["types"].items())
@@ -67,7 +67,7 @@ Fitted fit_description(const json& d, const FitSpec& parent, const std::string& 
   LeastSquaresProblem ls{p.start(), p.lower(), p.upper(), p.residual_count(),
                          [&](const std::vector<Eigen::VectorXd>& thetas) { return p.residuals(thetas); }};
   f.result = fit(ls, f.spec.optimizer);
-  std::vector<SimulationOutcome> outcomes;
+  std::vector<TestRunOutcome> outcomes;
   p.residuals(f.result.theta, outcomes);
   f.errors = experiment_errors(p, outcomes);
   return f;
@@ -91,9 +91,9 @@ json errors_json(const std::vector<ExperimentError>& errors) {
   for (const ExperimentError& e : errors) {
     json axes = json::array();
     for (const AxisError& a : e.axes)
-      axes.push_back({{"axis", a.axis}, {"points", a.points}, {"rms", std::isfinite(a.rms) ? json(a.rms) : json(nullptr)},
+      axes.push_back({{"axis", name_of(a.axis)}, {"points", a.points}, {"rms", std::isfinite(a.rms) ? json(a.rms) : json(nullptr)},
                       {"rms_normalised", a.rms_normalised}, {"mean", std::isfinite(a.mean) ? json(a.mean) : json(nullptr)}});
-    out.push_back({{"id", e.id}, {"test", e.test}, {"group", e.group}, {"ok", e.ok}, {"message", e.message}, {"axes", axes}});
+    out.push_back({{"id", e.id}, {"test", name_of(e.test)}, {"group", e.group}, {"ok", e.ok}, {"message", e.message}, {"axes", axes}});
   }
   return out;
 }
@@ -106,8 +106,13 @@ std::string num(double v, int digits = 3) {
   return s.str();
 }
 
-std::string axis_unit(const std::string& axis) {
-  return axis == "volumetric" ? "e_v %" : axis == "phi" ? "phi deg" : "stress";
+const char* axis_unit(Axis axis) {
+  switch (axis) {
+    case Axis::stress: break;
+    case Axis::volumetric: return "e_v %";
+    case Axis::phi: return "phi deg";
+  }
+  return "stress";
 }
 
 std::string markdown(const json& r, const CrossValidation& cv) {
@@ -180,8 +185,8 @@ double pooled_rms_normalised(const std::vector<ExperimentError>& errors) {
 }
 
 CrossValidation cross_validate(const json& description, const FitSpec& spec, const std::function<void(const std::string&)>& progress) {
-  const auto t0 = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  const auto t0 = WallClock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(WallClock::now() - t0).count(); };
   CrossValidation cv;
   const Fitted all = fit_description(subset(description, spec, [](const ExperimentSpec&) { return true; }), spec, spec.name);
   cv.all_data_cost = all.result.cost;
@@ -212,7 +217,7 @@ CrossValidation cross_validate(const json& description, const FitSpec& spec, con
     for (const ExperimentSpec& x : spec.experiments)
       if (in_fold(x) && std::find(groups.begin(), groups.end(), x.group) == groups.end()) groups.push_back(x.group);
     bool per_group = false;
-    for (const Variable& v : training.problem->variables()) per_group = per_group || !v.group.empty();
+    for (const FitVariable& v : training.problem->variables()) per_group = per_group || !v.group.empty();
     const auto& trained = training.spec.groups;
     std::map<std::string, ExperimentError> predicted;
     for (const std::string& g : groups) {

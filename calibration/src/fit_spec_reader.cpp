@@ -12,6 +12,8 @@
 #include "acst_calibration/fit_spec.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
+#include "acst_common/name_table.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/material_object.hpp"
@@ -22,10 +24,6 @@ using nlohmann::json;
 namespace f = common::fields;
 
 namespace {
-
-bool known(const char* const* begin, const char* const* end, const std::string& name) {
-  return std::find_if(begin, end, [&](const char* n) { return name == n; }) != end;
-}
 
 std::string list(const char* const* begin, const char* const* end) {
   std::string s;
@@ -162,18 +160,17 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
                                                        path + "/id (not given; the data file's name would be used)");
 
   if (e.contains("test")) {
-    x.test = f::string(e["test"], key_path("test"));
+    const std::string name = f::string(e["test"], key_path("test"));
+    const auto test = common::value_in(test_type_names, name);
+    if (!test) f::fail(key_path("test"), "unknown test type '" + name + "' (allowed: " + common::names_in(test_type_names) + ")");
+    x.test = *test;
   } else {
     const std::string kind = lab.text("kind").substr(0, lab.text("kind").find(' '));
-    if (kind == "TC") x.test = "drained_triaxial_compression";
-    else if (kind == "PSC") x.test = "plane_strain_compression";
+    if (kind == "TC") x.test = TestType::drained_triaxial_compression;
+    else if (kind == "PSC") x.test = TestType::plane_strain_compression;
     else f::fail(path + "/test", "required (the lab file's kind '" + lab.text("kind") + "' does not name a test)");
   }
-  const bool curve = known(std::begin(curve_tests), std::end(curve_tests), x.test);
-  const bool table = known(std::begin(table_tests), std::end(table_tests), x.test);
-  if (!curve && !table)
-    f::fail(key_path("test"), "unknown test type '" + x.test + "' (allowed: " + list(std::begin(curve_tests), std::end(curve_tests)) +
-                                  ", " + list(std::begin(table_tests), std::end(table_tests)) + ")");
+  const bool table = is_table_test(x.test);
   // A group names a parameter file of its own (NAME_parameters_GROUP.json).
   if (e.contains("group")) x.group = common::require_plain_stem(f::string(e["group"], key_path("group")), key_path("group"));
 
@@ -196,7 +193,7 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
         ? f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), {0.0, x.sigma3_kPa, true, false}, "kPa (at most sigma3_kPa)")
         : f::number(e["void_ratio_at_kPa"], key_path("void_ratio_at_kPa"), f::positive(), "kPa");
   if (e.contains("b")) {
-    if (x.test != "true_triaxial" && !(table && x.b_column.empty()))
+    if (x.test != TestType::true_triaxial && !(table && x.b_column.empty()))
       f::fail(key_path("b"), "only for the true_triaxial test, and for a peak_friction table without a b column");
     x.b = f::number(e["b"], key_path("b"), {0.0, 1.0});
   }
@@ -205,14 +202,14 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
     x.strain_increment_pct = f::number(e["strain_increment_pct"], key_path("strain_increment_pct"), {1e-4, 1.0}, "%");
   if (e.contains("max_cutbacks")) x.max_cutbacks = f::integer(e["max_cutbacks"], key_path("max_cutbacks"), 1, 1000000000);
 
-  if (curve) {
+  if (!table) {
     x.bedding_angle_deg = e.contains("bedding_angle_deg")
         ? f::number(e["bedding_angle_deg"], key_path("bedding_angle_deg"), angle_range, "deg")
         : header_number(lab, "bedding_angle_deg", path, "bedding_angle_deg", angle_range);
     try {
       lab = driver::read_lab_curve(x.data_file);
     } catch (const std::exception& err) {
-      f::fail(key_path("data"), std::string(err.what()) + " (a " + x.test + " test needs a lab curve)");
+      f::fail(key_path("data"), std::string(err.what()) + " (a " + name_of(x.test) + " test needs a lab curve)");
     }
     if (e.contains("strain_range_pct")) {
       const auto r = f::numbers(e["strain_range_pct"], key_path("strain_range_pct"), 2, "lowest and highest axial strain in %");
@@ -227,16 +224,17 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
       x.fit_stress = x.fit_volumetric = false;
       for (std::size_t i = 0; i < e["fit"].size(); ++i) {
         const std::string a = f::string(e["fit"][i], key_path("fit") + "/" + std::to_string(i));
-        if (a == "stress") x.fit_stress = true;
-        else if (a == "volumetric") x.fit_volumetric = true;
+        const auto axis = common::value_in(axis_names, a);
+        if (axis == Axis::stress) x.fit_stress = true;
+        else if (axis == Axis::volumetric) x.fit_volumetric = true;
         else f::fail(key_path("fit") + "/" + std::to_string(i), "'" + a + "' is not an axis (allowed: stress, volumetric)");
       }
     }
     if (e.contains("stress_measure")) {
       const std::string m = f::string(e["stress_measure"], key_path("stress_measure"));
-      if (m == "stress_ratio") x.stress_measure = StressMeasure::stress_ratio;
-      else if (m == "q_kPa") x.stress_measure = StressMeasure::q_kPa;
-      else f::fail(key_path("stress_measure"), "'" + m + "' is not allowed (stress_ratio = sigma1'/sigma3', q_kPa)");
+      const auto measure = common::value_in(stress_measure_names, m);
+      if (!measure) f::fail(key_path("stress_measure"), "'" + m + "' is not allowed (stress_ratio = sigma1'/sigma3', q_kPa)");
+      x.stress_measure = *measure;
     }
     for (const char* k : {"rows", "columns"})
       if (j.contains(k)) f::fail(path + "/" + k, "only for table tests (peak_friction)");
@@ -298,11 +296,9 @@ void read_weights(const json& j, FitSpec& s) {
     f::object(j["types"], "/weights/types");
     for (const auto& item : j["types"].items()) {
       const std::string p = "/weights/types/" + item.key();
-      if (!known(std::begin(curve_tests), std::end(curve_tests), item.key()) &&
-          !known(std::begin(table_tests), std::end(table_tests), item.key()))
-        f::fail(p, "unknown test type (allowed: " + list(std::begin(curve_tests), std::end(curve_tests)) + ", " +
-                       list(std::begin(table_tests), std::end(table_tests)) + ")");
-      s.type_weights[item.key()] = f::number(item.value(), p, {0.0, 1e6, true, false});
+      const auto type = common::value_in(test_type_names, item.key());
+      if (!type) f::fail(p, "unknown test type (allowed: " + common::names_in(test_type_names) + ")");
+      s.type_weights[*type] = f::number(item.value(), p, {0.0, 1e6, true, false});
     }
   }
   if (j.contains("axes")) {
@@ -354,7 +350,8 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
   s.base_dir = base_dir;
   // The name starts every output file's name and reaches the overview's gnuplot script.
   s.name = j.contains("name") ? common::require_plain_stem(f::string(j["name"], "/name"), "/name")
-                              : common::require_plain_stem(default_name, "/name (not given; the description file's name would be used)");
+                              : common::require_plain_stem(default_name.empty() ? "fit" : default_name,
+                                                           "/name (not given; the description file's name would be used)");
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
 
   s.material = driver::read_material_object(j["material"], "/material", base_dir).object;
@@ -389,10 +386,10 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
         f::fail(p.path + "/group_start/" + group, "no experiment is in the group '" + group + "'");
 
   if (j.contains("weights")) read_weights(j["weights"], s);
-  std::map<std::string, double> used;
+  std::map<TestType, double> used;
   for (const ExperimentSpec& x : s.experiments) used[x.test] = s.type_weights.count(x.test) ? s.type_weights[x.test] : 1.0;
   for (const auto& [type, w] : s.type_weights)
-    if (!used.count(type)) f::fail("/weights/types/" + type, "no experiment has this test type");
+    if (!used.count(type)) f::fail(std::string("/weights/types/") + name_of(type), "no experiment has this test type");
   double sum = 0.0;
   for (const auto& [type, w] : used) sum += w;
   if (!(sum > 0.0)) f::fail("/weights/types", "at least one test type in use needs a positive weight");
@@ -416,18 +413,12 @@ FitSpec parse(const json& j, const std::string& base_dir, const std::string& def
 }  // namespace
 
 FitSpec parse_fit_spec(const std::string& text, const std::string& base_dir, const std::string& default_name) {
-  return parse(f::parse(text, "", "the fit description"), base_dir, default_name.empty() ? "fit" : default_name);
+  return parse(f::parse(text, "", "the fit description"), base_dir, default_name);
 }
 
 FitSpec read_fit_spec(const std::string& path) {
-  std::string text;
-  try {
-    text = common::read_input_file(path);
-  } catch (const common::InputError& e) {
-    throw common::InputError(std::string("cannot read the fit description: ") + e.what());
-  }
   const std::filesystem::path p(path);
-  FitSpec s = parse_fit_spec(text, p.parent_path().string(), p.stem().string());
+  FitSpec s = parse(f::read_json_file(path, "the fit description"), p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

@@ -20,16 +20,28 @@ namespace acst::calibration {
 
 using nlohmann::json;
 
-double series_scale(const std::vector<double>& measured, const std::string& axis) {
+namespace {
+
+// 0.1 in sigma1'/sigma3', 1 kPa in q, 0.2 % volumetric strain, 1 deg of friction angle.
+double absolute_scale_floor(Axis axis, StressMeasure measure) {
+  switch (axis) {
+    case Axis::stress: return measure == StressMeasure::q_kPa ? 1.0 : 0.1;
+    case Axis::volumetric: return 0.2;
+    case Axis::phi: return 1.0;
+  }
+  return 0.1;
+}
+
+}  // namespace
+
+double series_scale(const std::vector<double>& measured, Axis axis, StressMeasure measure) {
   double lo = INFINITY, hi = -INFINITY, big = 0.0;
   for (double v : measured) {
     lo = std::min(lo, v);
     hi = std::max(hi, v);
     big = std::max(big, std::abs(v));
   }
-  // Absolute floors: 0.1 in sigma1'/sigma3', 0.2 % volumetric strain, 1 deg of friction angle.
-  const double absolute = axis == "volumetric" ? 0.2 : axis == "phi" ? 1.0 : axis == "stress_q" ? 1.0 : 0.1;
-  return std::max({hi - lo, 0.05 * big, absolute});
+  return std::max({hi - lo, 0.05 * big, absolute_scale_floor(axis, measure)});
 }
 
 double friction_angle_deg(const Sym& stress) {
@@ -54,13 +66,14 @@ int run_increments(double to_pct, double step_pct, const ExperimentSpec& x) {
 }
 
 // Scene of one run: optional isotropic consolidation from void_ratio_at_kPa, then shearing.
-json scene_json(const FitSpec& spec, const ExperimentSpec& x, const std::string& test, double b, double bedding,
+json scene_json(const FitSpec& spec, const ExperimentSpec& x, TestType test, double b, double bedding,
                 double axial_pct, int increments) {
   json steps = json::array();
   const bool consolidate = x.void_ratio_at_kPa > 0.0 && x.void_ratio_at_kPa < x.sigma3_kPa;
   if (consolidate) steps.push_back({{"preset", "isotropic_compression"}, {"p_to", x.sigma3_kPa}, {"increments", 20}});
-  json shear = {{"preset", test}, {"axial_strain_pct", axial_pct}, {"increments", increments}};
-  if (test == "true_triaxial") shear["b"] = b;
+  // A curve test's name is the driver preset's; a table row runs the true_triaxial preset.
+  json shear = {{"preset", name_of(test)}, {"axial_strain_pct", axial_pct}, {"increments", increments}};
+  if (test == TestType::true_triaxial) shear["b"] = b;
   steps.push_back(shear);
   json initial = {{"confining_pressure", consolidate ? x.void_ratio_at_kPa : x.sigma3_kPa}, {"void_ratio", x.void_ratio}};
   if (spec.material.value("model", std::string("ACST")) != "isotropic") initial["bedding_angle_deg"] = bedding;
@@ -69,7 +82,7 @@ json scene_json(const FitSpec& spec, const ExperimentSpec& x, const std::string&
   return scene;
 }
 
-driver::Scene build_scene(const json& j, const ExperimentSpec& x, const std::string& name) {
+driver::ElementScene build_scene(const json& j, const ExperimentSpec& x, const std::string& name) {
   try {
     return driver::parse_scene(j.dump(), "", name);
   } catch (const common::InputError& e) {
@@ -93,15 +106,15 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
     }
   }
   series_.resize(spec.experiments.size());
-  sims_of_.resize(spec.experiments.size());
+  runs_of_.resize(spec.experiments.size());
   for (std::size_t k = 0; k < spec.experiments.size(); ++k) {
     const ExperimentSpec& x = spec.experiments[k];
     const double w = experiment_weight(spec, k);
-    const bool table = x.test == "peak_friction";
+    const bool table = is_table_test(x.test);
     const driver::LabCurve lab = table ? driver::read_commented_csv(x.data_file, true) : driver::read_lab_curve(x.data_file);
     // `run`: the experiment with the conditions this run starts from (a table row's own).
-    auto add_simulation = [&](int row, const ExperimentSpec& run, double b, double bedding, const json& j, long increments) {
-      Simulation s;
+    auto add_test_run = [&](int row, const ExperimentSpec& run, double b, double bedding, const json& j, long increments) {
+      TestRun s;
       s.experiment = k;
       s.row = row;
       s.b = b;
@@ -111,12 +124,12 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       s.scene = build_scene(j, x, x.id);
       s.shear_step = static_cast<int>(s.scene.blocks.size()) - 1;
       s.increments = increments;
-      sims_of_[k].push_back(simulations_.size());
-      simulations_.push_back(std::move(s));
+      runs_of_[k].push_back(test_runs_.size());
+      test_runs_.push_back(std::move(s));
     };
     if (table) {
       Series phi;
-      phi.axis = "phi";
+      phi.axis = Axis::phi;
       const std::vector<double> measured = lab.column(x.phi_column);
       // A quantity from its column, or the experiment's one value for every row.
       auto per_row = [&](const std::string& column, double value) {
@@ -141,18 +154,18 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
         ExperimentSpec row = x;
         row.sigma3_kPa = sigma3[i];
         row.void_ratio = e0[i];
-        add_simulation(static_cast<int>(i), row, b[i], omega[i],
-                       scene_json(spec, row, "true_triaxial", b[i], omega[i], x.peak_search_strain_pct, n), n);
+        add_test_run(static_cast<int>(i), row, b[i], omega[i],
+                     scene_json(spec, row, TestType::true_triaxial, b[i], omega[i], x.peak_search_strain_pct, n), n);
         phi.x.push_back(static_cast<double>(i));
         phi.measured.push_back(measured[i]);
       }
       if (phi.x.empty()) throw common::InputError(x.path + "/rows: no row of '" + x.data_file + "' is selected");
-      phi.scale = series_scale(phi.measured, phi.axis);
+      phi.scale = series_scale(phi.measured, phi.axis, x.stress_measure);
       phi.point_weight = w / static_cast<double>(phi.x.size());
       series_[k].push_back(phi);
     } else {
       const auto eps_a = lab.column("eps_a_pct");
-      auto collect = [&](const char* column, const std::string& axis, double axis_weight) {
+      auto collect = [&](const char* column, Axis axis, double axis_weight) {
         Series s;
         s.axis = axis;
         const auto v = lab.column(column);
@@ -165,29 +178,29 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
         if (s.x.empty())
           throw common::InputError(x.path + "/strain_range_pct: no " + column + " point of '" + x.data_file + "' lies in [" +
                          std::to_string(x.strain_lo_pct) + ", " + std::to_string(x.strain_hi_pct) + "] %");
-        s.scale = series_scale(s.measured, axis == "stress" && x.stress_measure == StressMeasure::q_kPa ? "stress_q" : axis);
+        s.scale = series_scale(s.measured, axis, x.stress_measure);
         s.point_weight = w * axis_weight / static_cast<double>(s.x.size());
         series_[k].push_back(s);
       };
       const double sa = spec.stress_axis_weight, va = spec.volumetric_axis_weight;
       const double share = (x.fit_stress ? sa : 0.0) + (x.fit_volumetric ? va : 0.0);
       if (!(share > 0.0)) throw common::InputError(x.path + "/fit: the axes this experiment fits have zero weight (/weights/axes)");
-      if (x.fit_stress) collect(x.stress_measure == StressMeasure::q_kPa ? "q_kPa" : "stress_ratio", "stress", sa / share);
-      if (x.fit_volumetric) collect("eps_v_pct", "volumetric", va / share);
+      if (x.fit_stress) collect(name_of(x.stress_measure), Axis::stress, sa / share);
+      if (x.fit_volumetric) collect("eps_v_pct", Axis::volumetric, va / share);
       // Run a little past the last point so that it is interpolated, not extrapolated.
       double last = 0.0;
       for (const Series& s : series_[k]) last = std::max(last, s.x.back());
       const double to = last + 2.0 * x.strain_increment_pct;
       const int n = run_increments(to, x.strain_increment_pct, x);
-      add_simulation(-1, x, x.b, x.bedding_angle_deg, scene_json(spec, x, x.test, x.b, x.bedding_angle_deg, to, n), n);
+      add_test_run(-1, x, x.b, x.bedding_angle_deg, scene_json(spec, x, x.test, x.b, x.bedding_angle_deg, to, n), n);
     }
     for (const Series& s : series_[k]) residual_count_ += static_cast<int>(s.x.size());
   }
-  schedule_.resize(simulations_.size());
+  schedule_.resize(test_runs_.size());
   for (std::size_t i = 0; i < schedule_.size(); ++i) schedule_[i] = i;
   std::stable_sort(schedule_.begin(), schedule_.end(),
-                   [&](std::size_t a, std::size_t b) { return simulations_[a].increments > simulations_[b].increments; });
-  base_ = simulations_.front().scene.material->parameters();
+                   [&](std::size_t a, std::size_t b) { return test_runs_[a].increments > test_runs_[b].increments; });
+  base_ = test_runs_.front().scene.material->parameters();
   check_size();
 }
 
@@ -198,8 +211,8 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
 void Problem::check_size() const {
   using common::fields::shown;
   double increments = 0.0;
-  for (const Simulation& s : simulations_) increments += static_cast<double>(s.increments) + 2.0;
-  const std::string tests = std::to_string(simulations_.size()) + " element tests";
+  for (const TestRun& s : test_runs_) increments += static_cast<double>(s.increments) + 2.0;
+  const std::string tests = std::to_string(test_runs_.size()) + " element tests";
   if (increments > driver::max_total_increments)
     throw common::InputError("/experiments: one evaluation runs " + shown(increments) + " increments over " + tests +
                              ", more than the " + shown(driver::max_total_increments) + " allowed");
@@ -239,11 +252,11 @@ Parameters Problem::parameters(const Eigen::VectorXd& theta, const std::string& 
   return p;
 }
 
-SimulationOutcome Problem::simulate(const Simulation& sim, const Eigen::VectorXd& theta, bool keep_run) const {
+TestRunOutcome Problem::simulate(const TestRun& sim, const Eigen::VectorXd& theta, bool keep_run) const {
   const auto t0 = std::chrono::steady_clock::now();
-  SimulationOutcome out;
+  TestRunOutcome out;
   const ExperimentSpec& x = spec_.experiments[sim.experiment];
-  driver::Scene scene = sim.scene;
+  driver::ElementScene scene = sim.scene;
   try {
     const Parameters p = parameters(theta, x.group);
     validate(p);
@@ -291,16 +304,16 @@ SimulationOutcome Problem::simulate(const Simulation& sim, const Eigen::VectorXd
 }
 
 double Problem::simulated(std::size_t k, const Series& s, std::size_t i,
-                          const std::vector<const SimulationOutcome*>& outcomes) const {
-  if (s.axis == "phi") {
-    const SimulationOutcome& o = *outcomes[sims_of_[k][i]];
+                          const std::vector<const TestRunOutcome*>& outcomes) const {
+  if (s.axis == Axis::phi) {
+    const TestRunOutcome& o = *outcomes[runs_of_[k][i]];
     return o.ok ? o.peak_phi_deg : NAN;
   }
-  const SimulationOutcome& o = *outcomes[sims_of_[k].front()];
-  return o.ok ? common::interpolate(o.eps_a_pct, s.axis == "stress" ? o.stress : o.eps_v_pct, s.x[i]) : NAN;
+  const TestRunOutcome& o = *outcomes[runs_of_[k].front()];
+  return o.ok ? common::interpolate(o.eps_a_pct, s.axis == Axis::stress ? o.stress : o.eps_v_pct, s.x[i]) : NAN;
 }
 
-void Problem::assemble(const std::vector<const SimulationOutcome*>& outcomes, Eigen::VectorXd& r) const {
+void Problem::assemble(const std::vector<const TestRunOutcome*>& outcomes, Eigen::VectorXd& r) const {
   r.resize(residual_count_);
   Eigen::Index at = 0;
   for (std::size_t k = 0; k < series_.size(); ++k)
@@ -312,18 +325,18 @@ void Problem::assemble(const std::vector<const SimulationOutcome*>& outcomes, Ei
 }
 
 std::vector<Eigen::VectorXd> Problem::residuals(const std::vector<Eigen::VectorXd>& thetas) const {
-  const std::size_t ns = simulations_.size();
-  std::vector<SimulationOutcome> outcomes(thetas.size() * ns);
+  const std::size_t ns = test_runs_.size();
+  std::vector<TestRunOutcome> outcomes(thetas.size() * ns);
   // Longest runs first over all points, so that the threads finish together.
   common::parallel_for(
       threads_, outcomes.size(),
       [&](int, std::size_t job) {
         const std::size_t point = job % thetas.size(), sim = schedule_[job / thetas.size()];
-        outcomes[point * ns + sim] = simulate(simulations_[sim], thetas[point], false);
+        outcomes[point * ns + sim] = simulate(test_runs_[sim], thetas[point], false);
       },
       common::Schedule::dynamic);
   std::vector<Eigen::VectorXd> r(thetas.size());
-  std::vector<const SimulationOutcome*> view(ns);
+  std::vector<const TestRunOutcome*> view(ns);
   for (std::size_t point = 0; point < thetas.size(); ++point) {
     for (std::size_t s = 0; s < ns; ++s) view[s] = &outcomes[point * ns + s];
     assemble(view, r[point]);
@@ -331,13 +344,13 @@ std::vector<Eigen::VectorXd> Problem::residuals(const std::vector<Eigen::VectorX
   return r;
 }
 
-Eigen::VectorXd Problem::residuals(const Eigen::VectorXd& theta, std::vector<SimulationOutcome>& outcomes) const {
-  outcomes.assign(simulations_.size(), {});
+Eigen::VectorXd Problem::residuals(const Eigen::VectorXd& theta, std::vector<TestRunOutcome>& outcomes) const {
+  outcomes.assign(test_runs_.size(), {});
   common::parallel_for(
       threads_, schedule_.size(),
-      [&](int, std::size_t job) { outcomes[schedule_[job]] = simulate(simulations_[schedule_[job]], theta, true); },
+      [&](int, std::size_t job) { outcomes[schedule_[job]] = simulate(test_runs_[schedule_[job]], theta, true); },
       common::Schedule::dynamic);
-  std::vector<const SimulationOutcome*> view;
+  std::vector<const TestRunOutcome*> view;
   for (const auto& o : outcomes) view.push_back(&o);
   Eigen::VectorXd r;
   assemble(view, r);

@@ -9,6 +9,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
+#include "acst_common/name_table.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
@@ -20,8 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<const SimulationOutcome*> view_of(const std::vector<SimulationOutcome>& outcomes) {
-  std::vector<const SimulationOutcome*> v;
+std::vector<const TestRunOutcome*> view_of(const std::vector<TestRunOutcome>& outcomes) {
+  std::vector<const TestRunOutcome*> v;
   for (const auto& o : outcomes) v.push_back(&o);
   return v;
 }
@@ -35,9 +36,12 @@ std::string fmt(double v, const char* f = "%.4g") {
   return buf;
 }
 
-std::string axis_title(const ExperimentSpec& x, const std::string& axis) {
-  if (axis == "phi") return "peak friction angle [deg]";
-  if (axis == "volumetric") return "e_v [%] (contraction +)";
+std::string axis_title(const ExperimentSpec& x, Axis axis) {
+  switch (axis) {
+    case Axis::phi: return "peak friction angle [deg]";
+    case Axis::volumetric: return "e_v [%] (contraction +)";
+    case Axis::stress: break;
+  }
   return x.stress_measure == StressMeasure::q_kPa ? "sigma_1 - sigma_3 [kPa]" : "sigma_1/sigma_3 [-]";
 }
 
@@ -47,8 +51,8 @@ std::string panel(const Problem& problem, std::size_t k, const Series& s, std::s
   const ExperimentSpec& x = problem.spec().experiments[k];
   const std::string points = common::gp_quoted(dir + x.id + "_points.csv");
   std::ostringstream g;
-  g << "set title " << common::gp_quoted(x.id + " (" + x.test + ", " + s.axis + ")") << " noenhanced\n";
-  if (s.axis == "phi") {
+  g << "set title " << common::gp_quoted(x.id + " (" + name_of(x.test) + ", " + name_of(s.axis) + ")") << " noenhanced\n";
+  if (s.axis == Axis::phi) {
     // Against the void ratio where the rows have their own, else the bedding angle.
     const bool by_density = !x.void_ratio_column.empty();
     const char* xcol = by_density ? "5" : "2";
@@ -59,7 +63,7 @@ std::string panel(const Problem& problem, std::size_t k, const Series& s, std::s
       << "set xrange [*:*]\n";
     return g.str();
   }
-  const int column = s.axis == "stress" ? 2 : 3;
+  const int column = s.axis == Axis::stress ? 2 : 3;
   g << "set xlabel 'axial strain [%]'\nset ylabel " << common::gp_quoted(axis_title(x, s.axis)) << "\n"
     << "plot " << common::gp_quoted(dir + x.id + ".csv") << " using 1:" << column << " with lines lw 2 lc rgb '#1f77b4' title 'fit', \\\n"
     << "     " << points << " using 2:($1==" << index << "?$3:1/0) with points pt 7 ps 0.8 lc rgb '#d62728' title 'lab'\n";
@@ -76,7 +80,7 @@ std::string run_gnuplot_in(const fs::path& dir, const std::string& script) {
 
 }  // namespace
 
-std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<SimulationOutcome>& outcomes) {
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<TestRunOutcome>& outcomes) {
   const auto view = view_of(outcomes);
   std::vector<ExperimentError> errors;
   double total = 0.0;
@@ -87,7 +91,7 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
     e.test = x.test;
     e.group = x.group;
     e.weight = experiment_weight(problem.spec(), k);
-    for (std::size_t sim : problem.simulations_of(k))
+    for (std::size_t sim : problem.test_runs_of(k))
       if (!outcomes[sim].ok) {
         e.ok = false;
         if (e.message.empty()) e.message = outcomes[sim].message;
@@ -122,7 +126,7 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
 json fitted_material(const Problem& problem, const Eigen::VectorXd& theta, const std::string& group) {
   json m = problem.spec().material;
   const Parameters p = problem.parameters(theta, group);
-  for (const Variable& v : problem.variables()) m["parameters"][v.parameter] = p.*parameter_info(v.parameter)->member;
+  for (const FitVariable& v : problem.variables()) m["parameters"][v.parameter] = p.*parameter_info(v.parameter)->member;
   return m;
 }
 
@@ -163,7 +167,7 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
   json fixed = json::object();
   for (const auto& item : spec.material["parameters"].items()) {
     bool fitted = false;
-    for (const Variable& v : vars) fitted = fitted || v.parameter == item.key();
+    for (const FitVariable& v : vars) fitted = fitted || v.parameter == item.key();
     if (!fitted) fixed[item.key()] = item.value();
   }
   r["fixed"] = fixed;
@@ -171,10 +175,10 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
   for (const ExperimentError& e : errors) {
     json axes = json::array();
     for (const AxisError& a : e.axes)
-      axes.push_back({{"axis", a.axis}, {"points", a.points}, {"rms_normalised", number_or_null(a.rms_normalised)},
+      axes.push_back({{"axis", name_of(a.axis)}, {"points", a.points}, {"rms_normalised", number_or_null(a.rms_normalised)},
                       {"rms", number_or_null(a.rms)}, {"max_abs", number_or_null(a.max_abs)}, {"mean", number_or_null(a.mean)},
                       {"scale", a.scale}});
-    ex.push_back({{"id", e.id}, {"test", e.test}, {"group", e.group}, {"ok", e.ok}, {"message", e.message},
+    ex.push_back({{"id", e.id}, {"test", name_of(e.test)}, {"group", e.group}, {"ok", e.ok}, {"message", e.message},
                   {"weight", e.weight}, {"cost_share", e.cost_share}, {"axes", axes}});
   }
   r["experiments"] = ex;
@@ -195,7 +199,7 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
   const long evaluations = fit.evaluations;
   r["work"] = {{"objective_evaluations", evaluations},
                {"simulations", c.simulations.load()},
-               {"simulations_per_evaluation", problem.simulations().size()},
+               {"simulations_per_evaluation", problem.test_runs().size()},
                {"failed_simulations", c.failed.load()},
                {"increments", c.increments.load()},
                {"newton_iterations", c.iterations.load()},
@@ -263,11 +267,11 @@ std::string report_markdown(const json& r) {
     std::string cells[5] = {"-", "-", "-", "-", "-"};
     for (const json& a : e["axes"]) {
       auto num = [](const json& v, const char* f) { return v.is_null() ? std::string("failed") : fmt(v.get<double>(), f); };
-      const std::string axis = a["axis"];
-      if (axis == "stress") {
+      const auto axis = common::value_in(axis_names, a["axis"].get<std::string>());
+      if (axis == Axis::stress) {
         cells[0] = num(a["rms"], "%.3g");
         cells[1] = num(a["rms_normalised"], "%.3f");
-      } else if (axis == "volumetric") {
+      } else if (axis == Axis::volumetric) {
         cells[2] = num(a["rms"], "%.3g");
         cells[3] = num(a["rms_normalised"], "%.3f");
       } else {
@@ -309,7 +313,7 @@ bool is_fit_output_name(const std::string& fit_name, const std::string& entry) {
   return entry == "curves" || entry.rfind(fit_name + "_", 0) == 0 || common::is_temporary_name(entry);
 }
 
-std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit, const std::vector<SimulationOutcome>& outcomes,
+std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit, const std::vector<TestRunOutcome>& outcomes,
                                        const RunInfo& info, const std::string& directory, bool plot) {
   const FitSpec& spec = problem.spec();
   common::require_own_folder(directory, [&](const std::string& e) { return is_fit_output_name(spec.name, e); });
@@ -321,7 +325,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
   try {
     add(spec.name + "_parameters.json", fitted_material(problem, fit.theta, spec.reference_group).dump(2) + "\n");
     bool per_group = false;
-    for (const Variable& v : problem.variables()) per_group = per_group || !v.group.empty();
+    for (const FitVariable& v : problem.variables()) per_group = per_group || !v.group.empty();
     if (per_group)
       for (const std::string& g : spec.groups)
         add(spec.name + "_parameters_" + g + ".json", fitted_material(problem, fit.theta, g).dump(2) + "\n");
@@ -334,7 +338,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
     int panels = 0;
     for (std::size_t k = 0; k < spec.experiments.size(); ++k) {
       const ExperimentSpec& x = spec.experiments[k];
-      const bool table = x.test == "peak_friction";
+      const bool table = is_table_test(x.test);
       std::ostringstream pts;
       pts << (table ? "row,omega_deg,b,sigma3_kPa,void_ratio,measured,simulated\n" : "series,eps_a_pct,measured,simulated\n");
       for (std::size_t si = 0; si < problem.series(k).size(); ++si) {
@@ -342,7 +346,7 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
         for (std::size_t i = 0; i < s.x.size(); ++i) {
           const double sim = problem.simulated(k, s, i, view);
           if (table) {
-            const Simulation& row_sim = problem.simulations()[problem.simulations_of(k)[i]];
+            const TestRun& row_sim = problem.test_runs()[problem.test_runs_of(k)[i]];
             pts << s.x[i] << ',' << row_sim.bedding_angle_deg << ',' << row_sim.b << ',' << row_sim.sigma3_kPa << ','
                 << row_sim.void_ratio << ',' << s.measured[i] << ',' << (std::isfinite(sim) ? fmt(sim, "%.6g") : "") << '\n';
           } else {
@@ -352,9 +356,9 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
       }
       add(fs::path("curves") / (x.id + "_points.csv"), pts.str());
       if (!table) {
-        const SimulationOutcome& o = outcomes[problem.simulations_of(k).front()];
+        const TestRunOutcome& o = outcomes[problem.test_runs_of(k).front()];
         std::ostringstream c;
-        c << "eps_a_pct," << (x.stress_measure == StressMeasure::q_kPa ? "q_kPa" : "stress_ratio") << ",eps_v_pct\n";
+        c << "eps_a_pct," << name_of(x.stress_measure) << ",eps_v_pct\n";
         for (std::size_t i = 0; i < o.eps_a_pct.size(); ++i)
           c << fmt(o.eps_a_pct[i], "%.6g") << ',' << fmt(o.stress[i], "%.6g") << ',' << fmt(o.eps_v_pct[i], "%.6g") << '\n';
         add(fs::path("curves") / (x.id + ".csv"), c.str());

@@ -25,7 +25,7 @@ const char* kind_of(mode_t mode) {
   if (S_ISCHR(mode)) return "a character device";
   if (S_ISBLK(mode)) return "a block device";
   if (S_ISSOCK(mode)) return "a socket";
-  return "not a plain file";
+  return "another kind of file";
 }
 
 std::string mib(std::uintmax_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
@@ -46,15 +46,15 @@ std::string resolve(const std::string& base_dir, const std::string& name) {
 }
 
 std::string read_input_file(const std::string& path, std::uintmax_t max_bytes) {
-  const std::string quoted = "'" + path + "'";
+  const auto refuse = [&](const std::string& reason) { return InputError("'" + path + "': " + reason); };
+  const std::string too_large = "larger than the " + mib(max_bytes) + " an input file may have";
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
   const Descriptor d{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (d.fd < 0) throw InputError("cannot open " + quoted + ": " + std::strerror(errno));
+  if (d.fd < 0) throw refuse(std::string("cannot open: ") + std::strerror(errno));
   struct stat st {};
-  if (::fstat(d.fd, &st) != 0) throw InputError("cannot read " + quoted + ": " + std::strerror(errno));
-  if (!S_ISREG(st.st_mode)) throw InputError(quoted + " is " + kind_of(st.st_mode) + ", not a regular file");
-  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
-    throw InputError(quoted + " is larger than the " + mib(max_bytes) + " an input file may have");
+  if (::fstat(d.fd, &st) != 0) throw refuse(std::string("cannot read: ") + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw refuse(std::string(kind_of(st.st_mode)) + ", not a regular file");
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) throw refuse(too_large);
   std::string text(static_cast<std::size_t>(st.st_size), '\0');
   std::size_t got = 0;
   for (;;) {
@@ -65,11 +65,11 @@ std::string read_input_file(const std::string& path, std::uintmax_t max_bytes) {
     }
     const ssize_t n = ::read(d.fd, &text[got], text.size() - got);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw InputError("cannot read " + quoted + ": " + std::strerror(errno));
+    if (n < 0) throw refuse(std::string("cannot read: ") + std::strerror(errno));
     if (n == 0) break;
     got += static_cast<std::size_t>(n);
   }
-  if (got > max_bytes) throw InputError(quoted + " is larger than the " + mib(max_bytes) + " an input file may have");
+  if (got > max_bytes) throw refuse(too_large);
   text.resize(got);
   return text;
 }

@@ -13,17 +13,17 @@ ProgressLine::ProgressLine(std::ostream& err, bool enabled, double tty_interval_
       enabled_(enabled),
       tty_(::isatty(2) == 1 && &err == &std::cerr),
       interval_s_(tty_ ? tty_interval_s : log_interval_s),
-      start_(Clock::now()),
+      start_(WallClock::now()),
       last_(start_) {}
 
 bool ProgressLine::due() const {
   if (!enabled_ || interval_s_ <= 0.0) return false;
-  return std::chrono::duration<double>(Clock::now() - last_).count() >= interval_s_;
+  return std::chrono::duration<double>(WallClock::now() - last_).count() >= interval_s_;
 }
 
 void ProgressLine::show(const std::string& text) {
   if (!due()) return;
-  last_ = Clock::now();
+  last_ = WallClock::now();
   if (tty_) {
     err_ << '\r' << text << "\033[K" << std::flush;
     open_ = true;
@@ -43,7 +43,7 @@ void ProgressLine::close() {
   open_ = false;
 }
 
-double ProgressLine::elapsed_s() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+double ProgressLine::elapsed_s() const { return std::chrono::duration<double>(WallClock::now() - start_).count(); }
 
 std::string ProgressLine::time_left(double elapsed_s, double fraction_done) {
   if (!(fraction_done > 0.0)) return "? left";

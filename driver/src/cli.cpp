@@ -24,7 +24,7 @@ namespace acst::driver {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
+using WallClock = std::chrono::steady_clock;
 
 void usage(std::ostream& o) {
   o << "Usage: acst_element [--help] [--quiet] [--no-plot] [--output DIR] SCENE.json...\n"
@@ -102,7 +102,7 @@ struct Outcome {
   std::string name;
   bool ok = false;
   long increments = 0;
-  RunSummary summary;
+  ElementRunSummary summary;
   std::vector<LabComparison> labs;
   std::string csv;
 };
@@ -129,8 +129,8 @@ void print_summary(std::ostream& out, const std::vector<Outcome>& outcomes) {
 
 // Runs one scene, writing its CSV as the rows come, then its figure or its failure files; the
 // outcome is not ok when the run failed or its results could not be written.
-Outcome run_and_write(const Scene& s, int index, Progress& progress, std::ostream& err) {
-  const auto t0 = Clock::now();
+Outcome run_and_write(const ElementScene& s, int index, Progress& progress, std::ostream& err) {
+  const auto t0 = WallClock::now();
   Outcome o;
   o.name = s.output.name;
   // The lab curves were read when the scene was checked; one that cannot be read now is left
@@ -192,7 +192,7 @@ Outcome run_and_write(const Scene& s, int index, Progress& progress, std::ostrea
   }
   for (const LabComparer& l : labs) o.labs.push_back(l.comparison());
   progress.finished(index, s.output.name, r.increments, o.ok,
-                    std::chrono::duration<double>(Clock::now() - t0).count());
+                    std::chrono::duration<double>(WallClock::now() - t0).count());
   return o;
 }
 
@@ -210,7 +210,7 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
   const std::string& output_dir = cli.output;
   const std::vector<std::string>& files = cli.inputs;
   // Read and validate everything first: an invalid scene means nothing is written.
-  std::vector<Scene> scenes;
+  std::vector<ElementScene> scenes;
   int invalid = 0;
   for (const auto& f : files) {
     try {
@@ -223,7 +223,7 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
     }
   }
   std::map<std::string, std::string> targets;
-  for (const Scene& s : scenes) {
+  for (const ElementScene& s : scenes) {
     const std::string target = (fs::path(s.output.directory) / s.output.name).lexically_normal().string();
     const auto [it, fresh] = targets.emplace(target, s.source);
     if (!fresh) {
@@ -237,7 +237,7 @@ int element_cli(const std::vector<std::string>& args, std::ostream& out, std::os
     return 2;
   }
   long planned = 0;
-  for (const Scene& s : scenes) planned += static_cast<long>(scene_size(s.blocks, 1).increments);
+  for (const ElementScene& s : scenes) planned += static_cast<long>(scene_size(s.blocks, 1).increments);
   Progress progress(err, !quiet, static_cast<int>(scenes.size()), planned);
   std::vector<Outcome> outcomes;
   int failed = 0;

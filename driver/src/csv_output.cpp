@@ -33,7 +33,7 @@ std::string vec(const Sym& v) {
 
 }  // namespace
 
-std::string csv_comments(const Scene& scene) {
+std::string csv_comments(const ElementScene& scene) {
   const Parameters& par = scene.material->parameters();
   const integration::Options& opt = scene.material->options();
   std::string out;
@@ -110,7 +110,7 @@ void append_csv_row(std::string& out, const Record& r) {
   out += '\n';
 }
 
-std::string csv_text(const Scene& scene, const RunResult& result) {
+std::string csv_text(const ElementScene& scene, const RunResult& result) {
   std::string out = csv_comments(scene);
   out.reserve(out.size() + 400 * (result.records.size() + 2));
   if (!result.ok) out += csv_failure_line(result.message);

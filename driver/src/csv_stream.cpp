@@ -3,7 +3,7 @@
 
 namespace acst::driver {
 
-CsvStream::CsvStream(const Scene& scene, const std::string& csv_path) : file_(csv_path) {
+CsvStream::CsvStream(const ElementScene& scene, const std::string& csv_path) : file_(csv_path) {
   file_.write(csv_comments(scene));
   comments_end_ = file_.size();
   file_.write(csv_column_names());

@@ -96,7 +96,7 @@ void PlotRanges::add(const Record& r) {
   e_hi = std::max(e_hi, r.void_ratio);
 }
 
-std::string write_figure(const Scene& scene, const PlotRanges& ranges, const std::string& csv_path,
+std::string write_figure(const ElementScene& scene, const PlotRanges& ranges, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path) {
   if (!common::gnuplot_available()) return "gnuplot was not found on PATH: no PNG written (the CSV is complete)";
   const Parameters& par = scene.material->parameters();

@@ -2,6 +2,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 
 namespace acst::driver {
 
@@ -21,13 +22,7 @@ MaterialObject read_material_object(const json& j, const std::string& path, cons
   f::allow_keys(j, {"file", "integrator"}, path);
   m.source = f::string(j["file"], path + "/file");
   const std::string file = common::resolve(base_dir, m.source);
-  std::string text;
-  try {
-    text = common::read_input_file(file);
-  } catch (const common::InputError& e) {
-    f::fail(path + "/file", std::string("cannot read the material file: ") + e.what());
-  }
-  m.object = f::parse(text, path + "/file", "the material file '" + file + "'");
+  m.object = f::read_json_file(file, "the material file", path + "/file");
   m.path = path + "/file (" + file + ")";
   f::object(m.object, m.path);
   if (j.contains("integrator")) {

@@ -53,7 +53,7 @@ double signed_margin(const ExitCondition& c, const Point& pt) {  // >= 0 when th
 
 class Runner {
  public:
-  Runner(const Scene& scene, const RecordFn& on_record, const ProgressFn& progress)
+  Runner(const ElementScene& scene, const RecordFn& on_record, const ProgressFn& progress)
       : scene_(scene), mat_(*scene.material), on_record_(on_record), progress_(progress) {}
 
   RunResult run() {
@@ -73,7 +73,7 @@ class Runner {
  private:
   enum class End { completed, exit_step, exit_block, failed };
 
-  const Scene& scene_;
+  const ElementScene& scene_;
   const Material& mat_;
   const RecordFn& on_record_;
   const ProgressFn& progress_;
@@ -327,11 +327,11 @@ class Runner {
 
 }  // namespace
 
-RunResult stream_scene(const Scene& scene, const RecordFn& on_record, const ProgressFn& progress) {
+RunResult stream_scene(const ElementScene& scene, const RecordFn& on_record, const ProgressFn& progress) {
   return Runner(scene, on_record, progress).run();
 }
 
-RunResult run_scene(const Scene& scene, const ProgressFn& progress) {
+RunResult run_scene(const ElementScene& scene, const ProgressFn& progress) {
   std::vector<Record> records;
   RunResult r = stream_scene(scene, [&](const Record& rec) { records.push_back(rec); }, progress);
   r.records = std::move(records);

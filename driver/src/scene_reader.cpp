@@ -1,4 +1,4 @@
-// Scene JSON -> Scene: the top level (material, initial state, solver, lab data, output).
+// Scene JSON -> ElementScene: the top level (material, initial state, solver, lab data, output).
 // Steps are read in step_reader.cpp. Every error names the JSON path.
 #include <Eigen/SVD>
 #include <filesystem>
@@ -7,6 +7,7 @@
 #include "acst/json_input.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/material_object.hpp"
@@ -33,7 +34,7 @@ auto with_prefix(const std::string& prefix, Fn&& fn) -> decltype(fn()) {
 }
 
 // "material": {"file": "...", "integrator": {...}} or {"model", "parameters", "integrator"}.
-void read_material(const json& j, const std::string& path, const std::string& base_dir, Scene& scene) {
+void read_material(const json& j, const std::string& path, const std::string& base_dir, ElementScene& scene) {
   const MaterialObject m = read_material_object(j, path, base_dir);
   const json& effective = m.object;
   const std::string& prefix = m.path;
@@ -52,7 +53,7 @@ void read_material(const json& j, const std::string& path, const std::string& ba
   scene.material_json = effective;
 }
 
-void read_initial_state(const json& j, const std::string& path, Scene& scene) {
+void read_initial_state(const json& j, const std::string& path, ElementScene& scene) {
   f::allow_keys(j, {"stress", "confining_pressure", "void_ratio", "relative_density_pct", "bedding_angle_deg",
                     "deposition_direction", "fabric", "H", "substep_hint"},
                 path);
@@ -115,7 +116,7 @@ void read_solver(const json& j, const std::string& path, SolverSettings& s) {
   if (j.contains("max_cutbacks")) s.max_cutbacks = f::integer(j["max_cutbacks"], path + "/max_cutbacks", 1, 1000000000);
 }
 
-void read_output(const json& j, const std::string& path, OutputSpec& o) {
+void read_output(const json& j, const std::string& path, ElementOutputSpec& o) {
   f::allow_keys(j, {"directory", "name", "every", "plot"}, path);
   if (j.contains("directory")) {
     o.directory = f::string(j["directory"], path + "/directory");
@@ -128,7 +129,7 @@ void read_output(const json& j, const std::string& path, OutputSpec& o) {
   if (j.contains("plot")) o.plot = f::boolean(j["plot"], path + "/plot");
 }
 
-void read_lab_data(const json& j, const std::string& path, const std::string& base_dir, Scene& scene) {
+void read_lab_data(const json& j, const std::string& path, const std::string& base_dir, ElementScene& scene) {
   std::vector<std::pair<std::string, std::string>> names;  // (json path, file name)
   if (j.is_string()) {
     names.emplace_back(path, j.get<std::string>());
@@ -178,12 +179,13 @@ void check_rows_complete(const ControlRows& rows, const Material& material, cons
                     " of 6 with an elastic stiffness): every component must be controlled or constrained");
 }
 
-Scene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
-  const json j = f::parse(text, "", "the scene");
+namespace {
+
+ElementScene scene_from_document(const json& j, const std::string& base_dir, const std::string& default_name) {
   f::allow_keys(j, {"description", "material", "initial_state", "steps", "solver", "lab_data", "output"}, "");
   for (const char* key : {"material", "initial_state", "steps"})
     if (!j.contains(key)) f::fail(std::string("/") + key, "required key is missing");
-  Scene scene;
+  ElementScene scene;
   scene.base_dir = base_dir;
   if (j.contains("description")) f::string(j["description"], "/description");
   read_material(j["material"], "/material", base_dir, scene);
@@ -204,15 +206,15 @@ Scene parse_scene(const std::string& text, const std::string& base_dir, const st
   return scene;
 }
 
-Scene read_scene(const std::string& path) {
-  std::string text;
-  try {
-    text = common::read_input_file(path);
-  } catch (const common::InputError& e) {
-    throw common::InputError(std::string("cannot read the scene file: ") + e.what());
-  }
+}  // namespace
+
+ElementScene parse_scene(const std::string& text, const std::string& base_dir, const std::string& default_name) {
+  return scene_from_document(f::parse(text, "", "the scene"), base_dir, default_name);
+}
+
+ElementScene read_scene(const std::string& path) {
   const std::filesystem::path p(path);
-  Scene s = parse_scene(text, p.parent_path().string(), p.stem().string());
+  ElementScene s = scene_from_document(f::read_json_file(path, "the scene file"), p.parent_path().string(), p.stem().string());
   s.source = path;
   return s;
 }

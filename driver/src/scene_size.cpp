@@ -4,8 +4,8 @@
 
 namespace acst::driver {
 
-SceneSize scene_size(const std::vector<Block>& blocks, int every) {
-  SceneSize size;
+ElementSceneSize scene_size(const std::vector<Block>& blocks, int every) {
+  ElementSceneSize size;
   double segment_ends = 0.0;
   for (const Block& b : blocks) {
     double increments = 0.0, segments = 0.0;
@@ -23,7 +23,7 @@ SceneSize scene_size(const std::vector<Block>& blocks, int every) {
 
 void check_scene_size(const std::vector<Block>& blocks, int every) {
   namespace f = common::fields;
-  const SceneSize size = scene_size(blocks, every);
+  const ElementSceneSize size = scene_size(blocks, every);
   if (size.increments > max_total_increments) {
     // Name the block that asks for the most.
     const Block* largest = nullptr;

@@ -55,7 +55,7 @@ HandFit fit_by_hand(json d) {
   LeastSquaresProblem ls{p.start(), p.lower(), p.upper(), p.residual_count(),
                          [&](const std::vector<Eigen::VectorXd>& t) { return p.residuals(t); }};
   const FitResult r = fit(ls, s.optimizer);
-  std::vector<SimulationOutcome> out;
+  std::vector<TestRunOutcome> out;
   p.residuals(r.theta, out);
   return {r.theta.size() ? r.theta[0] : NAN, experiment_errors(p, out)};
 }
@@ -93,7 +93,7 @@ TEST(CrossValidation, EachFoldIsTheFitWithoutItAndItsPrediction) {
     FitSpec with_h1 = ps;
     with_h1.material["parameters"]["h1"] = training.theta;
     const Problem pp(with_h1);
-    std::vector<SimulationOutcome> out;
+    std::vector<TestRunOutcome> out;
     pp.residuals(Eigen::VectorXd(0), out);
     const ExperimentError expected = experiment_errors(pp, out).front();
     ASSERT_EQ(f.predicted.size(), 1u);

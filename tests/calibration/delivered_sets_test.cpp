@@ -28,7 +28,7 @@ TEST_P(DeliveredSet, ReproducesItsReport) {
   const json report = json::parse(test::read_text(std::string("data/calibration/reports/") + d.name + "/" + d.name + "_report.json"));
   Eigen::VectorXd theta(static_cast<Eigen::Index>(problem.variables().size()));
   for (std::size_t j = 0; j < problem.variables().size(); ++j) {
-    const Variable& v = problem.variables()[j];
+    const FitVariable& v = problem.variables()[j];
     const bool own_file = !v.group.empty() && v.group != spec.reference_group;
     const json set = json::parse(test::read_text(std::string("data/parameters/") + d.set + (own_file ? "_" + v.group : "") + ".json"));
     theta[static_cast<Eigen::Index>(j)] = set["parameters"][v.parameter].get<double>();

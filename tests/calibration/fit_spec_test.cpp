@@ -51,12 +51,12 @@ std::string error_of(const std::string& text) {
 TEST(FitSpec, ValidDescriptionAndNormalisedWeights) {
   const FitSpec s = parse_fit_spec(description(), base_dir, "t");
   ASSERT_EQ(s.experiments.size(), 4u);
-  EXPECT_EQ(s.experiments[0].test, "drained_triaxial_compression");  // from the file's kind: TC
-  EXPECT_EQ(s.experiments[2].test, "plane_strain_compression");      // kind: PSC
-  EXPECT_DOUBLE_EQ(s.experiments[0].sigma3_kPa, 98.0);                // from the file's header
+  EXPECT_EQ(s.experiments[0].test, TestType::drained_triaxial_compression);  // from the file's kind: TC
+  EXPECT_EQ(s.experiments[2].test, TestType::plane_strain_compression);      // kind: PSC
+  EXPECT_DOUBLE_EQ(s.experiments[0].sigma3_kPa, 98.0);                       // from the file's header
   EXPECT_DOUBLE_EQ(s.experiments[0].void_ratio, 0.671);
   EXPECT_EQ(s.groups, (std::vector<std::string>{"a", "b"}));
-  EXPECT_NEAR(s.type_weights.at("drained_triaxial_compression"), 0.5, 1e-15);
+  EXPECT_NEAR(s.type_weights.at(TestType::drained_triaxial_compression), 0.5, 1e-15);
   double total = 0.0;
   for (std::size_t k = 0; k < s.experiments.size(); ++k) total += experiment_weight(s, k);
   EXPECT_NEAR(total, 1.0, 1e-14);
@@ -71,7 +71,7 @@ TEST(FitSpec, ValidDescriptionAndNormalisedWeights) {
     for (const Series& ser : p.series(k)) points += ser.point_weight * static_cast<double>(ser.x.size());
   EXPECT_NEAR(points, 1.0, 1e-12);
   EXPECT_EQ(p.variables().size(), 3u);  // d1, F0[a], F0[b]
-  EXPECT_EQ(p.simulations().size(), 6u);  // 3 curves + the table rows with xi 90 and omega 0 (TC, PSC, TE)
+  EXPECT_EQ(p.test_runs().size(), 6u);  // 3 curves + the table rows with xi 90 and omega 0 (TC, PSC, TE)
 }
 
 // max_cutbacks from the defaults or the experiment reaches the scene of every run built from it
@@ -79,14 +79,14 @@ TEST(FitSpec, ValidDescriptionAndNormalisedWeights) {
 TEST(FitSpec, MaxCutbacksReachesEveryRunsScene) {
   const FitSpec none = parse_fit_spec(description(), base_dir, "t");
   const Problem unlimited(none);
-  for (const Simulation& sim : unlimited.simulations()) EXPECT_EQ(sim.scene.solver.max_cutbacks, 0);
+  for (const TestRun& sim : unlimited.test_runs()) EXPECT_EQ(sim.scene.solver.max_cutbacks, 0);
   std::string text = description("\"weights\"", "\"defaults\": {\"max_cutbacks\": 700}, \"weights\"");
   const std::string second = "\"group\": \"b\", \"weight\": 3";
   text.replace(text.find(second), second.size(), second + ", \"max_cutbacks\": 9");
   const FitSpec s = parse_fit_spec(text, base_dir, "t");
   const Problem p(s);
   for (std::size_t k = 0; k < s.experiments.size(); ++k)
-    for (std::size_t i : p.simulations_of(k)) EXPECT_EQ(p.simulations()[i].scene.solver.max_cutbacks, k == 1 ? 9 : 700) << k;
+    for (std::size_t i : p.test_runs_of(k)) EXPECT_EQ(p.test_runs()[i].scene.solver.max_cutbacks, k == 1 ? 9 : 700) << k;
 }
 
 struct BadCase {
@@ -133,7 +133,7 @@ TEST(FitSpec, NotJsonAndMissingFile) {
     read_fit_spec(base_dir + "/no_such_fit.json");
     FAIL() << "no error";
   } catch (const acst::common::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("cannot read"), std::string::npos);
+    EXPECT_EQ(std::string(e.what()).rfind("the fit description '" + base_dir + "/no_such_fit.json': cannot open: ", 0), 0u) << e.what();
   }
 }
 

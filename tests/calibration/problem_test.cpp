@@ -43,7 +43,7 @@ TEST(CalibrationProblem, ParallelRunsEqualOneThread) {
 TEST(CalibrationProblem, FailedRunIsAFinitePenalty) {
   // One substep per increment at a tolerance no step meets: every element test fails.
   const Problem p(spec(2, {{"max_substeps", 1}, {"stol", 1e-12}}));
-  std::vector<SimulationOutcome> outcomes;
+  std::vector<TestRunOutcome> outcomes;
   const Eigen::VectorXd r = p.residuals(Eigen::VectorXd::Constant(1, 0.44), outcomes);
   for (const auto& o : outcomes) EXPECT_FALSE(o.ok);
   Eigen::Index at = 0;
@@ -56,9 +56,9 @@ TEST(CalibrationProblem, FailedRunIsAFinitePenalty) {
 
 TEST(CalibrationProblem, ResidualIsTheWeightedNormalisedDifference) {
   const Problem p(spec(2));
-  std::vector<SimulationOutcome> outcomes;
+  std::vector<TestRunOutcome> outcomes;
   const Eigen::VectorXd r = p.residuals(Eigen::VectorXd::Constant(1, 0.44), outcomes);
-  const auto& o = outcomes[p.simulations_of(0).front()];
+  const auto& o = outcomes[p.test_runs_of(0).front()];
   ASSERT_TRUE(o.ok) << o.message;
   // First stress point of the first test, interpolated here by hand between the two run rows around it.
   const Series& s = p.series(0).front();
@@ -79,11 +79,11 @@ TEST(CalibrationProblem, ResidualIsTheWeightedNormalisedDifference) {
     }
   EXPECT_DOUBLE_EQ(s.scale, hi - lo);
   // The table rows: peak friction angles between 30 and 55 deg, as a sand's must be.
-  for (std::size_t k : p.simulations_of(2)) {
+  for (std::size_t k : p.test_runs_of(2)) {
     EXPECT_GT(outcomes[k].peak_phi_deg, 30.0);
     EXPECT_LT(outcomes[k].peak_phi_deg, 55.0);
   }
-  EXPECT_EQ(p.simulations_of(2).size(), 6u);  // TC, PSC, TE at omega 0 and 90
+  EXPECT_EQ(p.test_runs_of(2).size(), 6u);  // TC, PSC, TE at omega 0 and 90
 }
 
 }  // namespace

@@ -48,10 +48,10 @@ json description(const fs::path& table) {
 TEST(TableColumns, EveryRowRunsAtItsOwnStressAndDensity) {
   const fs::path table = write_table();
   const Problem p(parse_fit_spec(description(table).dump(), base_dir, "t"));
-  ASSERT_EQ(p.simulations().size(), 4u);
+  ASSERT_EQ(p.test_runs().size(), 4u);
   const double s3[] = {50, 50, 400, 10}, e0[] = {0.70, 0.85, 0.70, 0.70};
   for (std::size_t i = 0; i < 4; ++i) {
-    const Simulation& s = p.simulations()[i];
+    const TestRun& s = p.test_runs()[i];
     EXPECT_DOUBLE_EQ(s.sigma3_kPa, s3[i]);
     EXPECT_DOUBLE_EQ(s.void_ratio, e0[i]);
     EXPECT_DOUBLE_EQ(s.b, 0.0);
@@ -60,7 +60,7 @@ TEST(TableColumns, EveryRowRunsAtItsOwnStressAndDensity) {
     EXPECT_EQ(s.shear_step, i == 3 ? 0 : 1);
   }
   // The peaks follow the rows' conditions: denser is stronger, higher pressure weaker.
-  std::vector<SimulationOutcome> out;
+  std::vector<TestRunOutcome> out;
   p.residuals(Eigen::VectorXd(0), out);
   ASSERT_EQ(out.size(), 4u);
   for (const auto& o : out) ASSERT_TRUE(o.ok) << o.message;
@@ -149,7 +149,7 @@ TEST(BundledDescriptions, TableRowsAndFolds) {
     if (s.name == "toyoura_acst_table1_prediction" || s.name == "toyoura_acst_all_data") {
       const Problem p(s);
       std::size_t table = 0;
-      for (const Simulation& sim : p.simulations()) table += sim.row >= 0 && sim.sigma3_kPa != 98.0;  // lt88's rows: 98 kPa
+      for (const TestRun& sim : p.test_runs()) table += sim.row >= 0 && sim.sigma3_kPa != 98.0;  // lt88's rows: 98 kPa
       EXPECT_EQ(table, s.name == "toyoura_acst_all_data" ? 57u : 78u) << s.name;
       rows += table;
     }

@@ -26,7 +26,7 @@ TEST(BundledScenes, AllParseAndCoverEveryLabCurve) {
   std::set<std::string> named_lab_files, names;
   for (const auto& f : scene_files()) {
     SCOPED_TRACE(f.string());
-    const driver::Scene s = driver::read_scene(f.string());
+    const driver::ElementScene s = driver::read_scene(f.string());
     names.insert(s.output.name);
     for (const auto& lab : s.lab_data) named_lab_files.insert(fs::canonical(lab).string());
   }
@@ -48,7 +48,7 @@ TEST(BundledScenes, AllParseAndCoverEveryLabCurve) {
 }
 
 TEST(BundledScenes, ALabSceneRunsToItsStrainAtTheFilesConditions) {
-  const driver::Scene s = driver::read_scene((root / "data/scenes/element/lab_wang33_HKU_TMD1.json").string());
+  const driver::ElementScene s = driver::read_scene((root / "data/scenes/element/lab_wang33_HKU_TMD1.json").string());
   const driver::LabCurve lab = driver::read_lab_curve(s.lab_data.at(0));
   EXPECT_DOUBLE_EQ(mean_stress(s.initial.stress), lab.number("sigma3_kPa"));
   EXPECT_DOUBLE_EQ(s.initial.void_ratio, lab.number("e0"));

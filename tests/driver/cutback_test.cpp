@@ -69,7 +69,7 @@ TEST(CutBack, FinalFailureStopsWithAMessageAndAReproducerThatReplaysIt) {
   EXPECT_NE(replay.message.find("increment 1 of 1"), std::string::npos) << replay.message;
   EXPECT_NE(replay.message.find("more substeps than allowed"), std::string::npos) << replay.message;
   // ...from the same state and with the failing piece (a quarter of the 5 % after two halvings).
-  const driver::Scene s = parse(r.reproducer->dump());
+  const driver::ElementScene s = parse(r.reproducer->dump());
   EXPECT_EQ(s.initial.stress, r.records[0].stress);
   ASSERT_EQ(s.blocks.size(), 1u);
   const driver::Segment& g = s.blocks[0].steps[0].segments[0];

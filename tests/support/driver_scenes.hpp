@@ -21,7 +21,7 @@ inline std::string scene_json(const std::string& steps, double p0 = 100.0, doubl
          ", \"void_ratio\": " + std::to_string(e0) + ", \"bedding_angle_deg\": 0}, \"steps\": " + steps + extra + "}";
 }
 
-inline driver::Scene parse(const std::string& json) { return driver::parse_scene(json, "", "test"); }
+inline driver::ElementScene parse(const std::string& json) { return driver::parse_scene(json, "", "test"); }
 
 inline driver::RunResult run(const std::string& json) { return driver::run_scene(parse(json)); }
 

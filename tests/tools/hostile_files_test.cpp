@@ -60,17 +60,18 @@ const std::string shear =
 TEST(HostileFiles, ElementTool) {
   const Specials s("files_element");
   const Cli cli = driver::element_cli;
-  expect_refused(cli, s.dir, {"/dev/zero"}, {"cannot read the scene file", "'/dev/zero' is a character device, not a regular file"});
-  expect_refused(cli, s.dir, {s.fifo.string()}, {"is a FIFO, not a regular file"});
-  expect_refused(cli, s.dir, {s.folder.string()}, {"is a directory, not a regular file"});
-  expect_refused(cli, s.dir, {s.deep.string()}, {"/: the scene is not valid JSON: at /0/0/0", "nested deeper than 100 levels"});
+  expect_refused(cli, s.dir, {"/dev/zero"}, {"the scene file '/dev/zero': a character device, not a regular file"});
+  expect_refused(cli, s.dir, {s.fifo.string()}, {"the scene file '" + s.fifo.string() + "': a FIFO, not a regular file"});
+  expect_refused(cli, s.dir, {s.folder.string()}, {"the scene file '" + s.folder.string() + "': a directory, not a regular file"});
+  expect_refused(cli, s.dir, {s.deep.string()},
+                 {"the scene file '" + s.deep.string() + "': not valid JSON: at /0/0/0", "nested deeper than 100 levels"});
   write(s.dir / "material.json", "{\"parameters\": {\"G0\": 1e999}}");
   write(s.dir / "t.json", scene_json(shear, 100.0, 0.7, "", "{\"file\": \"/dev/zero\"}"));
-  expect_refused(cli, s.dir, {(s.dir / "t.json").string()}, {"/material/file: cannot read the material file: '/dev/zero' is a character device"});
+  expect_refused(cli, s.dir, {(s.dir / "t.json").string()}, {"/material/file: the material file '/dev/zero': a character device"});
   write(s.dir / "t.json", scene_json(shear, 100.0, 0.7, "", "{\"file\": \"material.json\"}"));
   expect_refused(cli, s.dir, {(s.dir / "t.json").string()}, {"/material/file: the material file", "at /parameters/G0: number overflow parsing '1e999'"});
   write(s.dir / "t.json", scene_json(shear, 100.0, 0.7, ", \"lab_data\": [\"fifo.json\"]"));
-  expect_refused(cli, s.dir, {(s.dir / "t.json").string()}, {"/lab_data/0: ", "is a FIFO, not a regular file"});
+  expect_refused(cli, s.dir, {(s.dir / "t.json").string()}, {"/lab_data/0: ", "fifo.json': a FIFO, not a regular file"});
   write(s.dir / "t.json", scene_json(shear, 100.0, 0.7, ", \"output\": {\"every\": 1e999}"));
   expect_refused(cli, s.dir, {(s.dir / "t.json").string()}, {"at /output/every: number overflow parsing '1e999'"});
 }
@@ -85,16 +86,17 @@ TEST(HostileFiles, FitTool) {
   const Cli cli = calibration::fit_cli;
   const std::string material = data + "/parameters/toyoura_acst_guide.json";
   const std::string lab = data + "/lab/fukushima_tatsuoka_1984/ft84_fig5a_sc1p0.csv";
-  expect_refused(cli, s.dir, {"/dev/zero"}, {"cannot read the fit description: '/dev/zero' is a character device"});
-  expect_refused(cli, s.dir, {s.fifo.string()}, {"is a FIFO, not a regular file"});
-  expect_refused(cli, s.dir, {s.folder.string()}, {"is a directory, not a regular file"});
-  expect_refused(cli, s.dir, {s.deep.string()}, {"/: the fit description is not valid JSON: at /0/0/0", "nested deeper than 100 levels"});
+  expect_refused(cli, s.dir, {"/dev/zero"}, {"the fit description '/dev/zero': a character device, not a regular file"});
+  expect_refused(cli, s.dir, {s.fifo.string()}, {"the fit description '" + s.fifo.string() + "': a FIFO, not a regular file"});
+  expect_refused(cli, s.dir, {s.folder.string()}, {"the fit description '" + s.folder.string() + "': a directory, not a regular file"});
+  expect_refused(cli, s.dir, {s.deep.string()},
+                 {"the fit description '" + s.deep.string() + "': not valid JSON: at /0/0/0", "nested deeper than 100 levels"});
   write(s.dir / "fit.json", fit_description("/dev/zero", lab));
-  expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"/material/file: cannot read the material file: '/dev/zero' is a character device"});
+  expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"/material/file: the material file '/dev/zero': a character device"});
   write(s.dir / "fit.json", fit_description(material, s.fifo.string()));
-  expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"/experiments/0/data: ", "is a FIFO, not a regular file"});
+  expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"/experiments/0/data: ", "fifo.json': a FIFO, not a regular file"});
   write(s.dir / "fit.json", fit_description(material, "/dev/zero"));
-  expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"/experiments/0/data: ", "is a character device"});
+  expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"/experiments/0/data: ", "'/dev/zero': a character device"});
   // The number that made acst_fit abort, in the description and in the material file it names.
   write(s.dir / "fit.json", fit_description(material, lab, ", \"weight\": 1e999"));
   expect_refused(cli, s.dir, {(s.dir / "fit.json").string()}, {"at /experiments/0/weight: number overflow parsing '1e999'"});
@@ -119,21 +121,22 @@ TEST(HostileFiles, MpmTool) {
   const Specials s("files_mpm");
   const Cli cli = mpm::mpm_cli;
   const std::string elastic = "{\"model\": \"linear_elastic\", \"parameters\": {\"E\": 1000, \"nu\": 0.3}}";
-  expect_refused(cli, s.dir, {"/dev/zero"}, {"cannot open the scene file: '/dev/zero' is a character device"});
-  expect_refused(cli, s.dir, {s.fifo.string()}, {"is a FIFO, not a regular file"});
-  expect_refused(cli, s.dir, {s.folder.string()}, {"is a directory, not a regular file"});
-  expect_refused(cli, s.dir, {s.deep.string()}, {"/: the scene is not valid JSON: at /0/0/0", "nested deeper than 100 levels"});
+  expect_refused(cli, s.dir, {"/dev/zero"}, {"the scene file '/dev/zero': a character device, not a regular file"});
+  expect_refused(cli, s.dir, {s.fifo.string()}, {"the scene file '" + s.fifo.string() + "': a FIFO, not a regular file"});
+  expect_refused(cli, s.dir, {s.folder.string()}, {"the scene file '" + s.folder.string() + "': a directory, not a regular file"});
+  expect_refused(cli, s.dir, {s.deep.string()},
+                 {"the scene file '" + s.deep.string() + "': not valid JSON: at /0/0/0", "nested deeper than 100 levels"});
   write(s.dir / "s.json", mpm_scene("\"/dev/zero\""));
-  expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"/materials/soil: '/dev/zero' is a character device"});
+  expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"/materials/soil: '/dev/zero': a character device"});
   write(s.dir / "s.json", mpm_scene("\"fifo.json\""));
-  expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"/materials/soil: ", "is a FIFO"});
+  expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"/materials/soil: ", "fifo.json': a FIFO"});
   write(s.dir / "s.json", mpm_scene(elastic, ", \"output\": {\"lab_curve\": \"folder.json\"}"));
-  expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"/output/lab_curve: ", "is a directory"});
+  expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"/output/lab_curve: ", "folder.json': a directory"});
   write(s.dir / "s.json", mpm_scene("{\"model\": \"linear_elastic\", \"parameters\": {\"E\": 1e999, \"nu\": 0.3}}"));
   expect_refused(cli, s.dir, {(s.dir / "s.json").string()}, {"at /materials/soil/parameters/E: number overflow parsing '1e999'"});
   // A checkpoint to resume from must be a regular file as well.
   write(s.dir / "s.json", mpm_scene(elastic));
-  expect_refused(cli, s.dir, {"--resume", "/dev/zero", (s.dir / "s.json").string()}, {"cannot read the checkpoint: '/dev/zero' is a character device"});
+  expect_refused(cli, s.dir, {"--resume", "/dev/zero", (s.dir / "s.json").string()}, {"--resume: the checkpoint '/dev/zero': a character device"});
 }
 
 }  // namespace

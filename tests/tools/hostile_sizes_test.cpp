@@ -161,7 +161,7 @@ TEST(HostileSizes, FailedRunAfterManyRowsLeavesTheGoodCsvWhole) {
   const std::string failed = common::read_input_file((out / "t.failed.csv").string());
   // Streamed, it is the same text as the whole run written at once: the failure line above the
   // column names, then the 5001 rows.
-  const driver::Scene scene = driver::read_scene((dir / "t.json").string());
+  const driver::ElementScene scene = driver::read_scene((dir / "t.json").string());
   const driver::RunResult r = driver::run_scene(scene);
   ASSERT_FALSE(r.ok);
   ASSERT_EQ(r.records.size(), 5001u);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "acst_calibration/curve_axis.hpp"
+#include "acst_calibration/test_type.hpp"
 #include "acst_common/input_error.hpp"
 
 namespace acst::calibration {
@@ -21,19 +23,10 @@ struct FittedParameter {
   std::map<std::string, double> group_start;  // per-group starts (default: `start`)
 };
 
-// The stress axis of a curve: sigma1'/sigma3' (the lab files' stress_ratio) or q = sigma1' - sigma3'.
-enum class StressMeasure { stress_ratio, q_kPa };
-
-// Curve tests are run with the driver preset of the same name; `peak_friction` runs one
-// true-triaxial test (sigma3' held, b fixed) per selected row of a friction-angle table.
-inline constexpr const char* curve_tests[] = {"drained_triaxial_compression", "plane_strain_compression",
-                                              "true_triaxial"};
-inline constexpr const char* table_tests[] = {"peak_friction"};
-
 struct ExperimentSpec {
   std::string id;             // unique; default: the data file's stem
   std::string path;           // JSON path, e.g. /experiments/3
-  std::string test;           // a curve test or a table test
+  TestType test = TestType::drained_triaxial_compression;
   std::string group = "all";  // for per-group parameters
   std::string data_file;      // resolved path
   double sigma3_kPa = 0.0;    // confining stress during shearing
@@ -87,7 +80,7 @@ struct FitSpec {
   std::vector<FittedParameter> parameters;
   std::vector<ExperimentSpec> experiments;
   std::vector<std::string> groups;              // in order of first appearance
-  std::map<std::string, double> type_weights;   // normalised to sum to one over the types used
+  std::map<TestType, double> type_weights;      // normalised to sum to one over the types used
   double stress_axis_weight = 0.5, volumetric_axis_weight = 0.5;  // normalised to sum to one
   OptimizerSettings optimizer;
   std::string output_dir;  // output.directory; default results/calibration/NAME (one result set per folder)

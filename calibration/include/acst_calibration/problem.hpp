@@ -21,7 +21,9 @@
 
 namespace acst::calibration {
 
-struct Variable {
+// One variable of the least-squares problem: a fitted material constant, shared by all
+// experiments or one group's own.
+struct FitVariable {
   std::string parameter;  // material constant
   std::string group;      // "" when shared by all experiments
   std::string label;      // "F0" or "F0[tatsuoka]"
@@ -30,26 +32,26 @@ struct Variable {
 
 // Measured points of one axis of one experiment, inside its strain range.
 struct Series {
-  std::string axis;  // "stress" (sigma1'/sigma3' or q) or "volumetric" (eps_v %) or "phi" (deg)
+  Axis axis = Axis::stress;
   std::vector<double> x;       // axial strain % (curves) or table row index (tables)
   std::vector<double> measured;
   double scale = 1.0;          // normalising range
   double point_weight = 0.0;   // w_type w_test w_axis / n_points
 };
 
-// One driver run: a whole curve, or one row of a table test.
-struct Simulation {
+// One element test run by the driver: a whole curve, or one row of a table test.
+struct TestRun {
   std::size_t experiment = 0;
   int row = -1;  // table row, -1 for curves
   double b = 0.0, bedding_angle_deg = 0.0;  // of the shearing step
   double sigma3_kPa = 0.0, void_ratio = 0.0;  // the conditions it starts from (a table row: its own)
-  driver::Scene scene;
+  driver::ElementScene scene;
   int shear_step = 0;  // index of the shearing step (1 after an isotropic consolidation)
   long increments = 0;
 };
 
 // What one run produced, reduced to what the residuals need.
-struct SimulationOutcome {
+struct TestRunOutcome {
   bool ok = false;
   std::string message;
   std::vector<double> eps_a_pct, stress, eps_v_pct;  // shearing part, from the start of shearing
@@ -71,11 +73,11 @@ class Problem {
   explicit Problem(const FitSpec& spec);
 
   const FitSpec& spec() const { return spec_; }
-  const std::vector<Variable>& variables() const { return variables_; }
+  const std::vector<FitVariable>& variables() const { return variables_; }
   const std::vector<Series>& series(std::size_t experiment) const { return series_[experiment]; }
-  const std::vector<Simulation>& simulations() const { return simulations_; }
-  // Indices into simulations() of experiment k's runs (a table: one per selected row, in order).
-  const std::vector<std::size_t>& simulations_of(std::size_t k) const { return sims_of_[k]; }
+  const std::vector<TestRun>& test_runs() const { return test_runs_; }
+  // Indices into test_runs() of experiment k's runs (a table: one per selected row, in order).
+  const std::vector<std::size_t>& test_runs_of(std::size_t k) const { return runs_of_[k]; }
   int residual_count() const { return residual_count_; }
   Eigen::VectorXd start() const;
   Eigen::VectorXd lower() const;
@@ -87,35 +89,36 @@ class Problem {
   // Residuals at several points; all runs of all points share one pool of `threads` threads.
   std::vector<Eigen::VectorXd> residuals(const std::vector<Eigen::VectorXd>& thetas) const;
   // Residuals at one point, with the outcome of every simulation (for reports).
-  Eigen::VectorXd residuals(const Eigen::VectorXd& theta, std::vector<SimulationOutcome>& outcomes) const;
+  Eigen::VectorXd residuals(const Eigen::VectorXd& theta, std::vector<TestRunOutcome>& outcomes) const;
 
   // The simulated value at point i of series s of experiment k (NaN when the run failed or
-  // ended before that strain); outcomes are indexed like simulations().
-  double simulated(std::size_t k, const Series& s, std::size_t i, const std::vector<const SimulationOutcome*>& outcomes) const;
+  // ended before that strain); outcomes are indexed like test_runs().
+  double simulated(std::size_t k, const Series& s, std::size_t i, const std::vector<const TestRunOutcome*>& outcomes) const;
 
   WorkCounters& counters() const { return counters_; }
   int threads() const { return threads_; }
 
  private:
-  SimulationOutcome simulate(const Simulation& sim, const Eigen::VectorXd& theta, bool keep_run) const;
-  void assemble(const std::vector<const SimulationOutcome*>& outcomes, Eigen::VectorXd& r) const;
+  TestRunOutcome simulate(const TestRun& sim, const Eigen::VectorXd& theta, bool keep_run) const;
+  void assemble(const std::vector<const TestRunOutcome*>& outcomes, Eigen::VectorXd& r) const;
   void check_size() const;
 
   FitSpec spec_;
   Parameters base_;
-  std::vector<Variable> variables_;
+  std::vector<FitVariable> variables_;
   std::vector<std::vector<Series>> series_;     // per experiment
-  std::vector<std::vector<std::size_t>> sims_of_;  // per experiment: its simulations
-  std::vector<Simulation> simulations_;
-  std::vector<std::size_t> schedule_;           // simulations, longest first
+  std::vector<std::vector<std::size_t>> runs_of_;  // per experiment: its test runs
+  std::vector<TestRun> test_runs_;
+  std::vector<std::size_t> schedule_;           // test runs, longest first
   int residual_count_ = 0;
   int threads_ = 1;
   mutable WorkCounters counters_;
 };
 
-// Normalising range of a measured series: max - min, floored at `floor_fraction` of max |value|
-// (and at an absolute floor for the axis) so that flat series do not blow up.
-double series_scale(const std::vector<double>& measured, const std::string& axis);
+// Normalising range of a measured series: max - min, floored at 5 % of max |value| and at an
+// absolute floor for the axis (and, on the stress axis, its measure) so that flat series do not
+// blow up.
+double series_scale(const std::vector<double>& measured, Axis axis, StressMeasure measure);
 
 // Peak friction angle (deg) of a stress state: asin((s1 - s3)/(s1 + s3)) over principal stresses.
 double friction_angle_deg(const Sym& stress);

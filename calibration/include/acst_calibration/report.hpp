@@ -14,7 +14,7 @@
 namespace acst::calibration {
 
 struct AxisError {
-  std::string axis;  // stress, volumetric, phi
+  Axis axis = Axis::stress;
   int points = 0;
   double rms_normalised = 0.0;  // RMS of (simulated - measured) / scale
   double rms = 0.0;             // RMS in the axis' unit (sigma1'/sigma3', kPa, %, deg)
@@ -24,7 +24,9 @@ struct AxisError {
 };
 
 struct ExperimentError {
-  std::string id, test, group;
+  std::string id;
+  TestType test = TestType::drained_triaxial_compression;
+  std::string group;
   bool ok = true;
   std::string message;     // of a failed run
   double weight = 0.0;     // normalised
@@ -32,7 +34,7 @@ struct ExperimentError {
   std::vector<AxisError> axes;
 };
 
-std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<SimulationOutcome>& outcomes);
+std::vector<ExperimentError> experiment_errors(const Problem& problem, const std::vector<TestRunOutcome>& outcomes);
 
 struct RunInfo {
   double total_seconds = 0.0;  // from reading the description to the end of the fit (before writing)
@@ -56,7 +58,7 @@ bool is_fit_output_name(const std::string& fit_name, const std::string& entry);
 // only hold an earlier result of the same fit (checked first by the tool, see is_fit_output_name).
 // Returns warnings (gnuplot missing or failed); throws std::runtime_error when a file cannot be written.
 std::vector<std::string> write_outputs(const Problem& problem, const FitResult& fit,
-                                       const std::vector<SimulationOutcome>& outcomes, const RunInfo& info,
+                                       const std::vector<TestRunOutcome>& outcomes, const RunInfo& info,
                                        const std::string& directory, bool plot);
 
 }  // namespace acst::calibration

@@ -16,8 +16,9 @@ inline constexpr std::uintmax_t max_input_bytes = std::uintmax_t{64} << 20;
 
 // The whole content of the regular file `path` of at most `max_bytes`. Anything else (missing,
 // unreadable, a directory, a device such as /dev/zero, a FIFO, too large) throws InputError
-// naming the file and saying why, for the caller to prefix with its own terms (a JSON path, a
-// command-line argument). A FIFO is opened without waiting for a writer.
+// "'<path>': <reason>" ("'/dev/zero': a character device, not a regular file"), for the caller
+// to put its own terms in front (what the file is, a JSON path, a command-line argument). A FIFO
+// is opened without waiting for a writer. JSON files: fields::read_json_file (json_file.hpp).
 std::string read_input_file(const std::string& path, std::uintmax_t max_bytes = max_input_bytes);
 
 // A hidden temporary name beside `path`, unique to this process.

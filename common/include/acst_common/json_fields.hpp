@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "acst_common/input_error.hpp"
+#include "acst_common/name_table.hpp"
 
 namespace acst::common::fields {
 
@@ -209,17 +210,14 @@ inline std::string string(const json& v, const std::string& path) {
   return v.get<std::string>();
 }
 
-// A string that names one of a fixed set of choices; returns the value it names, else fails with
-// the path and the names allowed.
-template <class T>
-T choice(const json& j, const std::string& path, std::initializer_list<std::pair<const char*, T>> choices) {
+// A string that names one of a fixed set of choices, {{"name", value}, ...} given here or a
+// table of name_table.hpp; returns the value it names, else fails with the path and the names
+// allowed.
+template <class T, class Table = std::initializer_list<Named<T>>>
+T choice(const json& j, const std::string& path, const Table& choices) {
   const std::string name = string(j, path);
-  std::string allowed;
-  for (const auto& [n, value] : choices) {
-    if (name == n) return value;
-    allowed += (allowed.empty() ? "" : ", ") + std::string(n);
-  }
-  fail(path, "'" + name + "' is not one of " + allowed);
+  if (const auto value = value_in(choices, name)) return *value;
+  fail(path, "'" + name + "' is not one of " + names_in(choices));
 }
 
 inline bool boolean(const json& v, const std::string& path) {

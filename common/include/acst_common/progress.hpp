@@ -28,11 +28,11 @@ class ProgressLine {
   bool on_terminal() const { return tty_; }
 
  private:
-  using Clock = std::chrono::steady_clock;
+  using WallClock = std::chrono::steady_clock;
   std::ostream& err_;
   bool enabled_, tty_, open_ = false;
   double interval_s_;
-  Clock::time_point start_, last_;
+  WallClock::time_point start_, last_;
 };
 
 }  // namespace acst::common

@@ -17,9 +17,9 @@ namespace acst::driver {
 
 // The CSV text of a run held in memory: header comments, the failure line of a failed run,
 // column names, one line per record.
-std::string csv_text(const Scene& scene, const RunResult& result);
+std::string csv_text(const ElementScene& scene, const RunResult& result);
 // Its parts, for writing the rows as they come.
-std::string csv_comments(const Scene& scene);
+std::string csv_comments(const ElementScene& scene);
 std::string csv_failure_line(const std::string& message);
 const std::string& csv_column_names();
 void append_csv_row(std::string& out, const Record& r);
@@ -29,7 +29,7 @@ void append_csv_row(std::string& out, const Record& r);
 // failure line in its header, when it fails; the other name is left untouched either way.
 class CsvStream {
  public:
-  CsvStream(const Scene& scene, const std::string& csv_path);  // throws std::runtime_error
+  CsvStream(const ElementScene& scene, const std::string& csv_path);  // throws std::runtime_error
   void add(const Record& r);
   void publish();                                                          // as csv_path
   void publish_failed(const std::string& failed_path, const std::string& message);
@@ -51,7 +51,7 @@ struct PlotRanges {
 // curves as points) to png_path with gnuplot, keeping the script at gp_path; gnuplot reads the
 // run's rows from the CSV, `ranges` sets the axes. Returns "" on success, otherwise a warning
 // (gnuplot missing or failed); the CSV is never affected.
-std::string write_figure(const Scene& scene, const PlotRanges& ranges, const std::string& csv_path,
+std::string write_figure(const ElementScene& scene, const PlotRanges& ranges, const std::string& csv_path,
                          const std::string& png_path, const std::string& gp_path);
 
 }  // namespace acst::driver

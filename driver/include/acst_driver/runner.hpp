@@ -31,10 +31,10 @@ using RecordFn = std::function<void(const Record&)>;
 
 // Runs the scene, handing each row to `on_record` and keeping none: the memory a run needs does
 // not grow with its number of increments (acst_element writes the rows as they come).
-RunResult stream_scene(const Scene& scene, const RecordFn& on_record, const ProgressFn& progress = {});
+RunResult stream_scene(const ElementScene& scene, const RecordFn& on_record, const ProgressFn& progress = {});
 
 // The same with every row kept in the result's records (short runs: tests, calibration).
-RunResult run_scene(const Scene& scene, const ProgressFn& progress = {});
+RunResult run_scene(const ElementScene& scene, const ProgressFn& progress = {});
 
 // The quantity an exit condition watches, at a given stress, strain and excess pore pressure.
 double exit_quantity(ExitQuantity q, const Sym& stress, const Sym& strain, double u_excess);

@@ -85,14 +85,14 @@ struct SolverSettings {
   long max_cutbacks = 0;  // the most halvings of the whole run (0: no limit)
 };
 
-struct OutputSpec {
+struct ElementOutputSpec {
   std::string directory = "results/element";  // relative to the current working directory
   std::string name;                            // file stem; default: the scene file's stem
   int every = 1;                               // write every n-th increment (and every step end)
   bool plot = true;
 };
 
-struct Scene {
+struct ElementScene {
   std::string source;     // scene file (empty when parsed from text)
   std::string base_dir;   // relative file names in the scene resolve against this directory
   nlohmann::json material_json;  // the effective material object {model, parameters, integrator}
@@ -102,24 +102,24 @@ struct Scene {
   std::vector<Block> blocks;
   SolverSettings solver;
   std::vector<std::string> lab_data;  // resolved paths
-  OutputSpec output;
+  ElementOutputSpec output;
 };
 
 // Reads and validates a scene file. Relative paths inside it (material file, lab data, strain
 // path CSV) are resolved against the directory of the scene file.
-Scene read_scene(const std::string& path);
+ElementScene read_scene(const std::string& path);
 
 // The same from JSON text; `base_dir` resolves relative paths, `default_name` names the output.
-Scene parse_scene(const std::string& json_text, const std::string& base_dir, const std::string& default_name);
+ElementScene parse_scene(const std::string& json_text, const std::string& base_dir, const std::string& default_name);
 
 // What a scene asks for, counted in double so that no count can overflow before it is checked:
 // the increments (every segment's, times its block's cycles) and the CSV rows (every n-th
 // increment plus every segment's end). parse_scene refuses more than the caps.
-struct SceneSize {
+struct ElementSceneSize {
   double increments = 0.0;
   double rows = 0.0;
 };
-SceneSize scene_size(const std::vector<Block>& blocks, int every);
+ElementSceneSize scene_size(const std::vector<Block>& blocks, int every);
 // A run of 1e9 increments takes hours at the driver's speed (docs/element-tests.md); 1e8 rows
 // are some 35 GB of CSV.
 inline constexpr double max_total_increments = 1e9;

@@ -10,7 +10,7 @@
 
 namespace acst::driver {
 
-struct RunSummary {
+struct ElementRunSummary {
   double peak_stress_ratio = 0.0;   // max q/p (signed q)
   double final_stress_ratio = 0.0;
   double final_axial_strain_pct = 0.0;
@@ -20,10 +20,10 @@ struct RunSummary {
 class Summariser {
  public:
   void add(const Record& r);
-  const RunSummary& summary() const { return s_; }
+  const ElementRunSummary& summary() const { return s_; }
 
  private:
-  RunSummary s_;
+  ElementRunSummary s_;
   bool any_ = false;
 };
 

@@ -219,7 +219,7 @@ void read_checkpoint(const std::string& path, const Scene& scene, Simulation& si
     // inputs; its own cap only stops a file that cannot be one (the reader checks the rest).
     data = common::read_input_file(path, max_checkpoint_bytes);
   } catch (const common::InputError& e) {
-    throw common::InputError(std::string("--resume: cannot read the checkpoint: ") + e.what());
+    throw common::InputError(std::string("--resume: the checkpoint ") + e.what());
   }
   Reader r{data, 0, path};
   if (data.size() < sizeof magic || std::memcmp(data.data(), magic, sizeof magic - 1) != 0)

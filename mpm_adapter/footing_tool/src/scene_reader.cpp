@@ -4,6 +4,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_footing_tool/internal_length.hpp"
 #include "acst_footing_tool/scene.hpp"
@@ -284,10 +285,7 @@ void check_symmetric(const Scene& s) {
   }
 }
 
-}  // namespace
-
-Scene parse_scene(const std::string& json_text, const std::string& file) {
-  const json j = f::parse(json_text, "", "the scene");
+Scene scene_from_document(const json& j, const std::string& file) {
   f::allow_keys(j, {"name", "description", "grid", "materials", "bodies", "initial_stress", "gravity", "walls",
                     "surcharge_kPa", "confining_pressure_kPa", "footing", "quasi_static", "solver", "regularisation",
                     "stop", "output"},
@@ -389,16 +387,17 @@ Scene parse_scene(const std::string& json_text, const std::string& file) {
   return s;
 }
 
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& file) {
+  return scene_from_document(f::parse(json_text, "", "the scene"), file);
+}
+
 Scene read_scene(const std::string& path) {
-  std::string text;
+  const json j = f::read_json_file(path, "the scene file");
   try {
-    text = common::read_input_file(path);
-  } catch (const common::InputError& e) {
-    throw common::InputError(path + ": cannot open the scene file: " + e.what());
-  }
-  try {
-    return parse_scene(text, path);
-  } catch (const common::InputError& e) {
+    return scene_from_document(j, path);
+  } catch (const common::InputError& e) {  // an error inside the document: its path, after the file's
     throw common::InputError(path + ": " + e.what());
   }
 }

@@ -9,6 +9,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_footing_tool/first_peak.hpp"
 #include "acst_footing_tool/runner.hpp"
@@ -70,14 +71,6 @@ std::string load_at_column(double s) {
   return "q_at_S_over_B_" + common::fields::shown(s) + "_kPa";
 }
 
-json read_json_file(const std::string& path) {
-  try {
-    return common::fields::parse(common::read_input_file(path), "", "'" + path + "'");
-  } catch (const common::InputError& e) {
-    throw std::runtime_error(path + ": " + e.what());
-  }
-}
-
 }  // namespace
 
 std::string case_folder(const std::string& sweep_dir, const std::string& name) {
@@ -94,12 +87,12 @@ json case_fingerprint(const SweepCase& c) {
   return {{"scene", json::parse(c.scene.text)}, {"materials", materials}};
 }
 
-ordered_json case_row(const SweepCase& c, const std::string& dir, const std::string& status, const std::string& message,
+ordered_json case_row(const SweepCase& c, const std::string& dir, CaseStatus status, const std::string& message,
                       const std::vector<double>& load_at_S_over_B) {
   const Scene& s = c.scene;
   std::string groups;
   for (const std::string& g : c.groups) groups += (groups.empty() ? "" : " ") + g;
-  ordered_json row = {{"case", c.name}, {"group", groups}, {"status", status}};
+  ordered_json row = {{"case", c.name}, {"group", groups}, {"status", name_of(status)}};
   for (const auto& item : c.varied.items()) row[item.key()] = item.value();
   const BodySpec& body = s.bodies.front();
   for (const MaterialSpec& m : s.materials)
@@ -126,7 +119,7 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
   const double end_S_over_B = curve.S_over_B.empty() ? 0.0 : curve.S_over_B.back();
   // A failed run's last moments (an ejected particle, a material failure) throw the contact load
   // about by several times: the rows within failure_approach of its end do not count.
-  if (status == "failed") {
+  if (status == CaseStatus::failed) {
     std::size_t keep = 0;
     while (keep < curve.S_over_B.size() && curve.S_over_B[keep] <= end_S_over_B - failure_approach_S_over_B) ++keep;
     for (auto* v : {&curve.S_over_B, &curve.V, &curve.H, &curve.M, &curve.q}) v->resize(keep);
@@ -152,8 +145,8 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, const std::str
     row["peak_reached"] = curve.V.back() < 0.98 * *peak;
   }
   const std::string summary_file = (fs::path(dir) / "summary.json").string();
-  if (status == "done" && fs::exists(summary_file)) {
-    const json summary = read_json_file(summary_file);
+  if (status == CaseStatus::done && fs::exists(summary_file)) {
+    const json summary = common::fields::read_json_file(summary_file, "the run's summary");
     for (const char* when : {"at_peak", "at_end"})
       if (summary.contains("sides") && summary["sides"].contains(when))
         for (const auto& item : summary["sides"][when].items()) {
@@ -179,7 +172,8 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
   // An interrupted run of this very case goes on; anything else there is an earlier case's. The
   // fingerprint lies beside the folder: acst_mpm starts a new run only in a folder of its own files.
   const std::string fingerprint_path = partial + ".json";
-  if (fs::exists(checkpoint) && fs::exists(fingerprint_path) && read_json_file(fingerprint_path) == fingerprint)
+  if (fs::exists(checkpoint) && fs::exists(fingerprint_path) &&
+      common::fields::read_json_file(fingerprint_path, "the case's fingerprint") == fingerprint)
     run.resume_from = checkpoint;
   else
     fs::remove_all(partial);
@@ -188,11 +182,12 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
 
   Scene scene = c.scene;
   if (options.threads > 0) scene.solver.threads = options.threads;
-  std::string status = "done", message;
+  CaseStatus status = CaseStatus::done;
+  std::string message;
   try {
     run_scene(scene, run);
   } catch (const std::exception& e) {
-    status = "failed";
+    status = CaseStatus::failed;
     message = e.what();
   }
   // The run's message names files by where they were written; they are read where they end up.
@@ -212,7 +207,7 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
 json read_case_record(const std::string& sweep_dir, const std::string& name) {
   const std::string path = (fs::path(case_folder(sweep_dir, name)) / sweep_case_record).string();
   if (!fs::exists(path)) return nullptr;
-  return read_json_file(path);
+  return common::fields::read_json_file(path, "the case record");
 }
 
 }  // namespace acst::mpm

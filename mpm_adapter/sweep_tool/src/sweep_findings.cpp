@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "acst_common/json_fields.hpp"
+#include "acst_sweep/sweep_case.hpp"
 
 namespace acst::mpm {
 
@@ -33,9 +34,7 @@ FindingCheck read_check(const json& j, const std::string& p, const std::vector<s
   FindingCheck c;
   if (j.contains("what")) c.what = f::string(j["what"], p + "/what");
   if (!j.contains("expect")) f::fail(p, "'expect' is required");
-  c.expect = f::choice<std::string>(j["expect"], p + "/expect",
-                                    {{"increasing", "increasing"}, {"decreasing", "decreasing"}, {"similar", "similar"}, {"different", "different"},
-                                     {"greater", "greater"}, {"ratio", "ratio"}, {"near", "near"}, {"report", "report"}});
+  c.expect = f::choice<Expectation>(j["expect"], p + "/expect", expectation_names);
   if (!j.contains("cases")) f::fail(p, "'cases' is required");
   c.cases = names(j["cases"], p + "/cases", 1);
   for (std::size_t k = 0; k < c.cases.size(); ++k)
@@ -50,19 +49,29 @@ FindingCheck read_check(const json& j, const std::string& p, const std::vector<s
   if (j.contains("within_abs")) c.within_abs = f::number(j["within_abs"], p + "/within_abs", {0.0, 1e12});
 
   const auto need = [&](bool ok, const std::string& what) {
-    if (!ok) f::fail(p, "'" + c.expect + "' needs " + what);
+    if (!ok) f::fail(p, std::string("'") + name_of(c.expect) + "' needs " + what);
   };
   const bool one_column = c.columns.size() == 1;
-  if (c.expect == "increasing" || c.expect == "decreasing") need(c.cases.size() >= 2 && one_column, "two or more cases and one column");
-  if (c.expect == "similar" || c.expect == "different")
-    need(c.cases.size() >= 2 && one_column && !std::isnan(c.within), "two or more cases, one column and 'within'");
-  if (c.expect == "greater")
-    need((c.cases.size() == 2 && one_column) || c.columns.size() == 2, "two cases and one column, or two columns");
-  if (c.expect == "ratio") need(c.cases.size() == 2 && one_column && !std::isnan(c.value) && !std::isnan(c.within), "two cases, one column, 'value' and 'within'");
-  if (c.expect == "near")
-    need(one_column && !std::isnan(c.value) && (std::isnan(c.within) != std::isnan(c.within_abs)),
-         "one column, 'value' and one of 'within' (relative) or 'within_abs'");
-  if (c.expect != "greater" && c.columns.size() != 1) f::fail(p + "/columns", "two columns go with 'greater' only");
+  switch (c.expect) {
+    case Expectation::increasing:
+    case Expectation::decreasing: need(c.cases.size() >= 2 && one_column, "two or more cases and one column"); break;
+    case Expectation::similar:
+    case Expectation::different:
+      need(c.cases.size() >= 2 && one_column && !std::isnan(c.within), "two or more cases, one column and 'within'");
+      break;
+    case Expectation::greater:
+      need((c.cases.size() == 2 && one_column) || c.columns.size() == 2, "two cases and one column, or two columns");
+      break;
+    case Expectation::ratio:
+      need(c.cases.size() == 2 && one_column && !std::isnan(c.value) && !std::isnan(c.within), "two cases, one column, 'value' and 'within'");
+      break;
+    case Expectation::near:
+      need(one_column && !std::isnan(c.value) && (std::isnan(c.within) != std::isnan(c.within_abs)),
+           "one column, 'value' and one of 'within' (relative) or 'within_abs'");
+      break;
+    case Expectation::report: break;
+  }
+  if (c.expect != Expectation::greater && c.columns.size() != 1) f::fail(p + "/columns", "two columns go with 'greater' only");
   return c;
 }
 
@@ -78,8 +87,8 @@ const ordered_json* row_of(const std::vector<ordered_json>& rows, const std::str
 double value_of(const std::vector<ordered_json>& rows, const std::string& name, const std::string& column) {
   const ordered_json* r = row_of(rows, name);
   if (!r || !r->contains(column) || !(*r)[column].is_number()) return std::numeric_limits<double>::quiet_NaN();
-  const std::string status = r->value("status", std::string());
-  if (status == "done" || (status == "failed" && r->value("peak_reached", false))) return (*r)[column].get<double>();
+  const CaseStatus status = status_of(*r);
+  if (status == CaseStatus::done || (status == CaseStatus::failed && r->value("peak_reached", false))) return (*r)[column].get<double>();
   return std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -87,7 +96,7 @@ double value_of(const std::vector<ordered_json>& rows, const std::string& name, 
 std::string shown_value(const std::vector<ordered_json>& rows, const std::string& name, double v) {
   const ordered_json* r = row_of(rows, name);
   std::string text = name + " " + number_text(v);
-  if (r && r->value("status", std::string()) == "failed" && !std::isnan(v))
+  if (r && status_of(*r) == CaseStatus::failed && !std::isnan(v))
     text += " (failed at S/B " + number_text(r->value("final_S_over_B", 0.0)) + ", after its peak)";
   return text;
 }
@@ -124,7 +133,7 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows) 
       all = all && a > b;
       r.numbers += (r.numbers.empty() ? "" : "; ") + shown_value(rows, name, a) + " vs " + number_text(b);
     }
-    r.status = missing ? "open" : all ? "holds" : "fails";
+    r.status = missing ? CheckStatus::open : all ? CheckStatus::holds : CheckStatus::fails;
     return r;
   }
   std::vector<double> v;
@@ -134,34 +143,48 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows) 
   }
   for (std::size_t k = 0; k < v.size(); ++k) r.numbers += (k ? ", " : "") + shown_value(rows, c.cases[k], v[k]);
   bool holds = true;
-  if (c.expect == "increasing" || c.expect == "decreasing") {
-    for (std::size_t k = 1; k < v.size(); ++k) holds = holds && (c.expect == "increasing" ? v[k] > v[k - 1] : v[k] < v[k - 1]);
-  } else if (c.expect == "similar" || c.expect == "different") {
-    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    const double spread = *hi / *lo - 1.0;
-    holds = *lo > 0 && (c.expect == "similar" ? spread <= c.within : spread > c.within);
-    r.numbers += "; spread " + number_text(100.0 * spread) + " % (limit " + number_text(100.0 * c.within) + " %)";
-  } else if (c.expect == "greater") {
-    holds = v[0] > v[1];
-  } else if (c.expect == "ratio") {
-    const double ratio = v[0] / v[1];
-    holds = std::fabs(ratio - c.value) <= c.within;
-    r.numbers += "; ratio " + number_text(ratio) + " (expected " + number_text(c.value) + " +- " + number_text(c.within) + ")";
-  } else if (c.expect == "near") {
-    const double tolerance = std::isnan(c.within) ? c.within_abs : c.within * std::fabs(c.value);
-    for (double x : v) holds = holds && std::fabs(x - c.value) <= tolerance;
-    r.numbers += "; expected " + number_text(c.value) + " +- " + number_text(tolerance);
+  switch (c.expect) {
+    case Expectation::increasing:
+    case Expectation::decreasing: {
+      const bool up = c.expect == Expectation::increasing;
+      for (std::size_t k = 1; k < v.size(); ++k) holds = holds && (up ? v[k] > v[k - 1] : v[k] < v[k - 1]);
+      break;
+    }
+    case Expectation::similar:
+    case Expectation::different: {
+      const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+      const double spread = *hi / *lo - 1.0;
+      holds = *lo > 0 && (c.expect == Expectation::similar ? spread <= c.within : spread > c.within);
+      r.numbers += "; spread " + number_text(100.0 * spread) + " % (limit " + number_text(100.0 * c.within) + " %)";
+      break;
+    }
+    case Expectation::greater: holds = v[0] > v[1]; break;
+    case Expectation::ratio: {
+      const double ratio = v[0] / v[1];
+      holds = std::fabs(ratio - c.value) <= c.within;
+      r.numbers += "; ratio " + number_text(ratio) + " (expected " + number_text(c.value) + " +- " + number_text(c.within) + ")";
+      break;
+    }
+    case Expectation::near: {
+      const double tolerance = std::isnan(c.within) ? c.within_abs : c.within * std::fabs(c.value);
+      for (double x : v) holds = holds && std::fabs(x - c.value) <= tolerance;
+      r.numbers += "; expected " + number_text(c.value) + " +- " + number_text(tolerance);
+      break;
+    }
+    case Expectation::report: break;
   }
-  r.status = missing ? "open" : c.expect == "report" ? "reported" : holds ? "holds" : "fails";
+  r.status = missing ? CheckStatus::open
+             : c.expect == Expectation::report ? CheckStatus::reported
+             : holds ? CheckStatus::holds : CheckStatus::fails;
   return r;
 }
 
 std::string verdict(const std::vector<CheckResult>& results) {
   std::size_t held = 0, failed = 0, open = 0;
   for (const CheckResult& r : results) {
-    held += r.status == "holds";
-    failed += r.status == "fails";
-    open += r.status == "open";
+    held += r.status == CheckStatus::holds;
+    failed += r.status == CheckStatus::fails;
+    open += r.status == CheckStatus::open;
   }
   if (open > 0) return "open";
   if (failed == 0) return held > 0 ? "reproduced" : "reported";

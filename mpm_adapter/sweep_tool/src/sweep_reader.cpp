@@ -6,6 +6,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
+#include "acst_common/json_file.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_sweep/sweep.hpp"
 
@@ -125,13 +126,7 @@ class BaseScenes {
     const std::string file = common::resolve(dir_, f::string(name, p));
     auto it = cache_.find(file);
     if (it != cache_.end()) return it->second;
-    std::string text;
-    try {
-      text = common::read_input_file(file);
-    } catch (const common::InputError& e) {
-      f::fail(p, "cannot read the base scene: " + std::string(e.what()));
-    }
-    json j = f::parse(text, p, "the base scene '" + file + "'");
+    json j = f::read_json_file(file, "the base scene", p);
     f::object(j, p);
     return cache_.emplace(file, std::make_pair(file, std::move(j))).first->second;
   }
@@ -173,8 +168,9 @@ void set_at_pointer(json& scene, const std::string& pointer, const json& value, 
   }
 }
 
-SweepSpec parse_sweep(const std::string& json_text, const std::string& file, const std::string& extra_set) {
-  const json j = f::parse(json_text, "", "the sweep description");
+namespace {
+
+SweepSpec sweep_from_document(const json& j, const std::string& file, const std::string& extra_set) {
   f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings"}, "");
   SweepSpec s;
   s.file = file;
@@ -284,16 +280,17 @@ SweepSpec parse_sweep(const std::string& json_text, const std::string& file, con
   return s;
 }
 
+}  // namespace
+
+SweepSpec parse_sweep(const std::string& json_text, const std::string& file, const std::string& extra_set) {
+  return sweep_from_document(f::parse(json_text, "", "the sweep description"), file, extra_set);
+}
+
 SweepSpec read_sweep(const std::string& path, const std::string& extra_set) {
-  std::string text;
+  const json j = f::read_json_file(path, "the sweep description");
   try {
-    text = common::read_input_file(path);
-  } catch (const common::InputError& e) {
-    throw common::InputError(path + ": cannot open the sweep description: " + e.what());
-  }
-  try {
-    return parse_sweep(text, path, extra_set);
-  } catch (const common::InputError& e) {
+    return sweep_from_document(j, path, extra_set);
+  } catch (const common::InputError& e) {  // an error inside the document: its path, after the file's
     throw common::InputError(path + ": " + e.what());
   }
 }

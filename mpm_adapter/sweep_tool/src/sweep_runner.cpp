@@ -95,7 +95,7 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
     const SweepCase& c = sweep.cases[i];
     const json record = read_case_record(opt.output_dir, c.name);
     if (record.is_null()) {
-      plan.rows.push_back(case_row(c, "", "pending", "", sweep.load_at_S_over_B));
+      plan.rows.push_back(case_row(c, "", CaseStatus::pending, "", sweep.load_at_S_over_B));
       plan.pending.push_back(i);
       continue;
     }
@@ -107,10 +107,10 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
                                "; remove that folder to run the case again");
     // The row is read again from the case's folder: a newer acst_sweep gathers every case alike.
     const ordered_json& kept = record["row"];
-    plan.rows.push_back(case_row(c, case_folder(opt.output_dir, c.name), kept.value("status", std::string()),
+    plan.rows.push_back(case_row(c, case_folder(opt.output_dir, c.name), status_of(kept),
                                  kept.value("message", std::string()), sweep.load_at_S_over_B));
     plan.rows.back()["resumed"] = kept.value("resumed", false);
-    if (opt.retry_failed && kept.value("status", "") != "done") {
+    if (opt.retry_failed && status_of(kept) != CaseStatus::done) {
       plan.pending.push_back(i);
     } else {
       ++plan.skipped;
@@ -128,13 +128,13 @@ void gather(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const
 
 std::string finished_line(const SweepCase& c, const ordered_json& row) {
   char text[400];
-  if (row.value("status", "") == "done" && row.contains("q_ult_kPa")) {
+  if (status_of(row) == CaseStatus::done && row.contains("q_ult_kPa")) {
     std::snprintf(text, sizeof text, "%s: done in %s, q_ult %.1f kPa at S/B %.4f%s", c.name.c_str(),
                   common::duration_text(row.value("wall_s", 0.0)).c_str(), row["q_ult_kPa"].get<double>(),
                   row["S_ult_over_B"].get<double>(), row.value("resumed", false) ? " (resumed from its checkpoint)" : "");
     return text;
   }
-  return c.name + ": " + row.value("status", std::string("?")) + ": " + common::one_line(row.value("message", std::string()));
+  return c.name + ": " + name_of(status_of(row)) + ": " + common::one_line(row.value("message", std::string()));
 }
 
 }  // namespace
@@ -169,7 +169,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
     try {
       return run_case(sweep.cases[i], case_opt, sweep.load_at_S_over_B).dump();
     } catch (const std::exception& e) {  // its folder could not be written: the others go on
-      return case_row(sweep.cases[i], "", "failed", e.what(), sweep.load_at_S_over_B).dump();
+      return case_row(sweep.cases[i], "", CaseStatus::failed, e.what(), sweep.load_at_S_over_B).dump();
     }
   };
   if (!where.coordinator()) {
@@ -212,12 +212,12 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
   for (const std::string& w : warnings) err << "acst_sweep: warning: " << w << "\n";
 
   std::size_t done = 0;
-  for (const ordered_json& r : plan.rows) done += r.value("status", "") == "done";
+  for (const ordered_json& r : plan.rows) done += status_of(r) == CaseStatus::done;
   out << sweep.name << ": " << done << " of " << sweep.cases.size() << " cases done";
   if (done < sweep.cases.size()) {
     out << "; not done:";
     for (const ordered_json& r : plan.rows)
-      if (r.value("status", "") != "done") out << " " << r.value("case", std::string()) << " (" << r.value("status", std::string()) << ")";
+      if (status_of(r) != CaseStatus::done) out << " " << r.value("case", std::string()) << " (" << name_of(status_of(r)) << ")";
   }
   out << "\ntable: " << (fs::path(opt.output_dir) / "table.md").string() << "\n";
   return done == sweep.cases.size() ? common::exit_done : common::exit_failed;

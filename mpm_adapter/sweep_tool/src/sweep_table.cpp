@@ -151,7 +151,7 @@ std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::
 void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const std::string& dir,
                         const std::string& extra_report, const std::string& command) {
   std::size_t done = 0;
-  for (const ordered_json& r : rows) done += r.value("status", std::string()) == "done";
+  for (const ordered_json& r : rows) done += status_of(r) == CaseStatus::done;
   std::set<std::string> groups;
   for (const SweepCase& c : sweep.cases) groups.insert(c.groups.begin(), c.groups.end());
   // The same text in both places; only the folder the figure links start from differs.
@@ -175,9 +175,9 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
         const FindingCheck& c = fd.checks[k];
         std::string what = c.what;
         if (what.empty()) {
-          what = c.columns[0] + (c.columns.size() > 1 ? " > " + c.columns[1] : "") + ": " + c.expect;
+          what = c.columns[0] + (c.columns.size() > 1 ? " > " + c.columns[1] : "") + ": " + name_of(c.expect);
         }
-        md += "| " + markdown_cell(what) + " | " + markdown_cell(results[k].numbers) + " | " + results[k].status + " |\n";
+        md += "| " + markdown_cell(what) + " | " + markdown_cell(results[k].numbers) + " | " + name_of(results[k].status) + " |\n";
       }
       md += "\n";
       if (!fd.note.empty()) md += common::one_line(fd.note) + "\n\n";

@@ -63,7 +63,7 @@ TEST(MpmCli, InvalidSceneExitsTwoWithItsJsonPathAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
   const Cli missing = run({(dir / "none.json").string()});
   EXPECT_EQ(missing.rc, 2);
-  EXPECT_NE(missing.err.find("cannot open the scene file"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("the scene file '" + (dir / "none.json").string() + "': cannot open: "), std::string::npos) << missing.err;
   fs::remove_all(dir);
 }
 

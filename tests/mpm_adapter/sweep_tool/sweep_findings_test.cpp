@@ -27,7 +27,7 @@ FindingCheck check(const std::string& text) {
   return read_findings(json::parse(R"([{"finding": "f", "checks": [)" + text + "]}]"), "/findings", names)[0].checks[0];
 }
 
-std::string status(const std::string& text) { return judge(check(text), rows()).status; }
+std::string status(const std::string& text) { return name_of(judge(check(text), rows()).status); }
 
 std::string error(const std::string& text) {
   try {
@@ -69,17 +69,18 @@ TEST(SweepFindings, EachKindOfCheckIsJudgedOnTheRows) {
 }
 
 TEST(SweepFindings, TheVerdictFollowsItsChecks) {
-  const auto results = [](std::vector<std::string> statuses) {
+  const auto results = [](std::vector<CheckStatus> statuses) {
     std::vector<CheckResult> out;
-    for (const std::string& s : statuses) out.push_back({s, ""});
+    for (CheckStatus s : statuses) out.push_back({s, ""});
     return out;
   };
-  EXPECT_EQ(verdict(results({"holds", "holds"})), "reproduced");
-  EXPECT_EQ(verdict(results({"holds", "reported"})), "reproduced");
-  EXPECT_EQ(verdict(results({"fails", "fails"})), "not reproduced");
-  EXPECT_EQ(verdict(results({"holds", "fails"})), "partly reproduced");
-  EXPECT_EQ(verdict(results({"holds", "open"})), "open");
-  EXPECT_EQ(verdict(results({"reported"})), "reported");
+  using S = CheckStatus;
+  EXPECT_EQ(verdict(results({S::holds, S::holds})), "reproduced");
+  EXPECT_EQ(verdict(results({S::holds, S::reported})), "reproduced");
+  EXPECT_EQ(verdict(results({S::fails, S::fails})), "not reproduced");
+  EXPECT_EQ(verdict(results({S::holds, S::fails})), "partly reproduced");
+  EXPECT_EQ(verdict(results({S::holds, S::open})), "open");
+  EXPECT_EQ(verdict(results({S::reported})), "reported");
 }
 
 TEST(SweepFindings, BadChecksNameTheirPath) {

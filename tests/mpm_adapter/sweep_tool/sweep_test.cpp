@@ -196,7 +196,7 @@ TEST(SweepDescription, BadDescriptionsNameTheirJsonPath) {
        "give only one of path, paths"},
       {description(R"([{"name": "a", "group": ["ok", "../up"]}])"), "/cases/0/group/1"},
       {R"({"name": "t", "cases": [{"name": "a"}]})", "/cases/0: 'base' is required"},
-      {R"({"name": "t", "base": "/nonexistent/scene.json", "cases": [{"name": "a"}]})", "/base: cannot read the base scene"},
+      {R"({"name": "t", "base": "/nonexistent/scene.json", "cases": [{"name": "a"}]})", "/base: the base scene '/nonexistent/scene.json': cannot open: "},
       {description(R"([{"name": "a"}])", R"("gather": {"load_at_S_over_B": [-1]})"), "/gather/load_at_S_over_B/0"},
       {description(R"([{"name": "a"}])", R"("gather": {"case_figures": ["../x.png"]})"), "/gather/case_figures/0: '../x.png' is not a plain file stem"},
   };
@@ -451,7 +451,7 @@ TEST(SweepRow, AFailedRunsLastMomentsDoNotMakeItsPeak) {
     csv += std::to_string(k) + "," + std::to_string(sb) + "," + std::to_string(0.3 * q) + ",0,0," + std::to_string(q) + "\n";
   }
   write(dir / "load_settlement.failed.csv", csv);
-  const json row = case_row(s.cases[0], dir.string(), "failed", "it failed", {0.2, 0.3});
+  const json row = case_row(s.cases[0], dir.string(), CaseStatus::failed, "it failed", {0.2, 0.3});
   EXPECT_NEAR(row["q_ult_kPa"].get<double>(), 1000.0, 1e-6);
   EXPECT_NEAR(row["S_ult_over_B"].get<double>(), 0.1, 1e-9);
   EXPECT_TRUE(row["peak_reached"].get<bool>());
@@ -462,7 +462,7 @@ TEST(SweepRow, AFailedRunsLastMomentsDoNotMakeItsPeak) {
   EXPECT_NEAR(row["S_first_peak_over_B"].get<double>(), 0.1, 1e-9);
   // The same record from a run that ended: every row counts.
   fs::rename(dir / "load_settlement.failed.csv", dir / "load_settlement.csv");
-  EXPECT_NEAR(case_row(s.cases[0], dir.string(), "done", "", {})["q_ult_kPa"].get<double>(), 5000.0, 1e-6);
+  EXPECT_NEAR(case_row(s.cases[0], dir.string(), CaseStatus::done, "", {})["q_ult_kPa"].get<double>(), 5000.0, 1e-6);
 }
 
 // A curve sampled every 0.001 B: q(S/B) given piecewise linear through the points (S, q).

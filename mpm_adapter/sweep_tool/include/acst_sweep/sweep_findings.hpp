@@ -7,11 +7,24 @@
 #include <string>
 #include <vector>
 
+#include "acst_common/name_table.hpp"
+
 namespace acst::mpm {
+
+// What a check expects of the values it reads (docs/sweeps.md, "Findings").
+enum class Expectation { increasing, decreasing, similar, different, greater, ratio, near, report };
+
+// The names in the sweep description ("expect") and the report.
+inline constexpr common::Named<Expectation> expectation_names[] = {
+    {"increasing", Expectation::increasing}, {"decreasing", Expectation::decreasing}, {"similar", Expectation::similar},
+    {"different", Expectation::different},   {"greater", Expectation::greater},       {"ratio", Expectation::ratio},
+    {"near", Expectation::near},             {"report", Expectation::report}};
+
+inline const char* name_of(Expectation e) { return common::name_in(expectation_names, e); }
 
 struct FindingCheck {
   std::string what;                  // shown in the report; default: made from the check
-  std::string expect;                // increasing, decreasing, similar, different, greater, ratio, near, report
+  Expectation expect = Expectation::report;
   std::vector<std::string> cases;    // case names, in the order the check reads them
   std::vector<std::string> columns;  // one column, or two for "greater" within each case
   double value = std::numeric_limits<double>::quiet_NaN();
@@ -28,11 +41,20 @@ struct Finding {
 std::vector<Finding> read_findings(const nlohmann::json& j, const std::string& path,
                                    const std::vector<std::string>& case_names);
 
-// What a check says about the rows: "holds", "fails", "open" (a value is missing: the case has
-// not run, failed, or its record does not reach the column) or "reported" (no verdict asked);
-// `numbers`: the values it read, as the report shows them.
+// What a check says about the rows: open, a value is missing (the case has not run, failed, or
+// its record does not reach the column); reported, no verdict asked.
+enum class CheckStatus { holds, fails, open, reported };
+
+// The names in the report.
+inline constexpr common::Named<CheckStatus> check_status_names[] = {
+    {"holds", CheckStatus::holds}, {"fails", CheckStatus::fails}, {"open", CheckStatus::open}, {"reported", CheckStatus::reported}};
+
+inline const char* name_of(CheckStatus s) { return common::name_in(check_status_names, s); }
+
+// `numbers`: the values the check read, as the report shows them.
 struct CheckResult {
-  std::string status, numbers;
+  CheckStatus status = CheckStatus::open;
+  std::string numbers;
 };
 CheckResult judge(const FindingCheck& check, const std::vector<nlohmann::ordered_json>& rows);
 
