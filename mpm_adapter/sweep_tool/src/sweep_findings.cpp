@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "acst_common/json_fields.hpp"
-#include "acst_sweep/sweep_case.hpp"
+#include "acst_sweep/case_status.hpp"
 
 namespace acst::mpm {
 
