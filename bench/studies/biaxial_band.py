@@ -2,7 +2,7 @@
 """Plane-strain biaxial compression of dense Toyoura sand in the MPM, local and regularised
 (docs/footing-study.md, "The regularised biaxial test").
 
-A W x H sample (default 0.8 x 1.6 m) on a rough base under a rough rigid platen wider than the
+A W x H sample (default 0.8 x 1.6 m) on a rough base under a smooth rigid platen wider than the
 sample, its sides under the confining pressure, an imperfection (a looser square at mid-height
 on the left side) where the band starts. Each case runs acst_mpm to an axial strain and is
 measured: the axial stress ratio sigma_1/sigma_3 against the axial strain, its peak, and the
@@ -132,6 +132,30 @@ def band(run_dir, eps_from, eps_to, h):
             "equivalent_width_m": round(equivalent, 4), "profile": prof, "peak_increment": peak}
 
 
+def figure(out, title, runs):
+    """OUT: sigma_1/sigma_3 against the axial strain and the band's profile, one line per run
+    (label, run folder, profile CSV)."""
+    lines = ["set terminal pngcairo size 1300,520 noenhanced", f"set output {gp_quoted(out)}", "set multiplot layout 1,2",
+             "set grid", "set key top right", "set xlabel 'axial strain [%]'", "set ylabel 'sigma_1 / sigma_3'",
+             f"set title {gp_quoted(title)}", "set yrange [0:8]"]
+    plots, data = [], []
+    for label, run_dir, _ in runs:
+        eps, ratio = curve(run_dir)
+        plots.append(f"'-' using 1:2 with lines lw 2 title {gp_quoted(label)}")
+        data.append("\n".join(f"{e} {r}" for e, r in zip(eps, ratio)) + "\ne")
+    lines += ["plot " + ", ".join(plots)] + data
+    lines += ["set xlabel 'distance across the band [m]'", "set ylabel 'shear strain increment, 6 to 10 % axial strain'",
+              "set title 'the band across its middle half'", "set yrange [*:*]", "set xrange [-0.3:0.3]"]
+    plots, data = [], []
+    for label, _, profile in runs:
+        with open(profile) as f:
+            rows = [r for r in csv.reader(f)][1:]
+        plots.append(f"'-' using 1:2 with linespoints lw 2 pt 7 ps 0.5 title {gp_quoted(label)}")
+        data.append("\n".join(f"{x} {v}" for x, v in rows) + "\ne")
+    lines += ["plot " + ", ".join(plots)] + data + ["unset multiplot", ""]
+    subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
+
+
 def parse_case(text, threads):
     c = {"threads": threads}
     for part in text.split(","):
@@ -159,8 +183,13 @@ def main():
     ap.add_argument("--band-to", type=float, default=10.0, help="axial strain (%) of the second")
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
     ap.add_argument("--analyse-only", action="store_true")
+    ap.add_argument("--size", type=float, default=1.0, help="the sample's width and height times 0.8 x 1.6 m")
+    ap.add_argument("--figure", default="", help="also draw the cases into this PNG (its title: --title)")
+    ap.add_argument("--title", default="biaxial compression, dense Toyoura, sigma_3 100 kPa")
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
+    global WIDTH, HEIGHT
+    WIDTH, HEIGHT = 0.8 * a.size, 1.6 * a.size
     os.makedirs(a.out, exist_ok=True)
     results = []
     for text in a.cases:
@@ -199,6 +228,9 @@ def main():
             w = csv.writer(f)
             w.writerow(["across_m", "shear_strain_increment"])
             w.writerows(b["profile"])
+    if a.figure:
+        figure(a.figure, a.title, [(r["case"].replace("biaxial_", ""), os.path.join(a.out, r["case"]),
+                                    os.path.join(a.out, r["case"] + "_profile.csv")) for r in results if "peak_ratio" in r])
     fields = list(results[0].keys())
     with open(os.path.join(a.out, "biaxial.csv"), "a", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)

@@ -40,7 +40,7 @@ const char* failure_text(IncrementFailure f) {
 }
 
 IncrementResult solve_increment(const Material& material, State& state, const LinearControl& ctl, const Sym& guess,
-                                const NewtonOptions& o) {
+                                const NewtonOptions& o, double void_ratio_offset) {
   IncrementResult res;
   res.failure = IncrementFailure::not_converged;
   Sym deps = guess;
@@ -50,7 +50,7 @@ IncrementResult solve_increment(const Material& material, State& state, const Li
     res.iterations = it;
     State trial = state;
     Mat6 D;
-    res.material = material.update(trial, deps, &D);
+    res.material = material.update(trial, deps, &D, void_ratio_offset);
     work += res.material.counters;
     if (res.material.status != integration::Status::ok) {
       res.failure = IncrementFailure::material;

@@ -186,7 +186,7 @@ class Runner {
       c.c = start + (done + piece) * inc.c - (inc.A * pt.state.stress + inc.B * pt.strain);
       const Sym guess = guess_unit_ * piece;
       State s = pt.state;
-      const IncrementResult r = solve_increment(mat_, s, c, guess, scene_.solver.newton);
+      const IncrementResult r = solve_increment(mat_, s, c, guess, scene_.solver.newton, scene_.initial.void_ratio_offset);
       w.iterations += r.iterations;
       w.substeps += r.material.counters.substeps_accepted;
       if (r.converged) {
@@ -321,6 +321,7 @@ class Runner {
           {"strain_tolerance", o.strain_tolerance},
           {"max_halvings", 0}}},
         {"output", {{"name", scene_.output.name + "_reproducer"}, {"plot", false}}}};
+    if (scene_.initial.void_ratio_offset != 0.0) repro["initial_state"]["void_ratio_offset"] = scene_.initial.void_ratio_offset;
     result_.reproducer = repro;
   }
 };

@@ -55,7 +55,7 @@ void read_material(const json& j, const std::string& path, const std::string& ba
 
 void read_initial_state(const json& j, const std::string& path, ElementScene& scene) {
   f::allow_keys(j, {"stress", "confining_pressure", "void_ratio", "relative_density_pct", "bedding_angle_deg",
-                    "deposition_direction", "fabric", "H", "substep_hint"},
+                    "deposition_direction", "fabric", "H", "substep_hint", "void_ratio_offset"},
                 path);
   const Material& m = *scene.material;
   InitialState& s = scene.initial;
@@ -101,6 +101,9 @@ void read_initial_state(const json& j, const std::string& path, ElementScene& sc
   }
   if (j.contains("H")) s.H = f::number(j["H"], path + "/H", {0.0, 1e3}, "(cone size R/g)");
   if (j.contains("substep_hint")) s.substep_hint = f::number(j["substep_hint"], path + "/substep_hint", {0.0, 1.0, true, false});
+  if (j.contains("void_ratio_offset"))
+    s.void_ratio_offset = f::number(j["void_ratio_offset"], path + "/void_ratio_offset", {-void_ratio_limit, void_ratio_limit, true, true},
+                                    "(a nonlocal void ratio minus the point's own)");
   with_prefix(path, [&] { return m.initial_state(s.stress, s.void_ratio, s.deposition_direction); });
 }
 

@@ -136,7 +136,7 @@ void transcendental(const Constants& k, const double (&e)[W], const double (&off
       continue;
     }
     const double e_c = critical_void_ratio(k.e_Gamma, k.lambda_c, k.xi, st.pressure_ratio[l]);
-    const double psi = state_parameter(e[l] + offset[l], e_c);
+    const double psi = nonlocal_state_parameter(state_parameter(e[l], e_c), offset[l]);
     const double zeta = dilatancy_state_parameter(psi, k.e_A, st.A[l]);
     st.exp_m_zeta[l] = dilatancy_exponential(k.m, zeta);
     st.exp_n_zeta[l] = peak_exponential(peak_state_coefficient(k.n, k.beta, st.peak_pressure_ratio[l]), zeta);

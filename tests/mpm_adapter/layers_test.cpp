@@ -59,7 +59,11 @@ TEST(MpmLayers, EachPartIncludesOnlyWhatLiesBelowIt) {
 TEST(MpmLayers, NoModuleReachesBackUpInsideAPart) {
   const std::map<std::string, std::string> own_prefix = {
       {"core", "acst_mpm/"}, {"footing_tool", "acst_footing_tool/"}, {"sweep_tool", "acst_sweep/"}};
-  for (const auto& [part, prefix] : own_prefix) {
+  for (const auto& entry : own_prefix) {
+    // Named copies, not structured bindings: a lambda below captures the part's name, and
+    // C++17 (clang) does not let a lambda capture a structured binding.
+    const std::string part = entry.first;
+    const std::string prefix = entry.second;
     const std::vector<fs::path> files = sources_of(part);
     std::map<std::string, std::set<std::string>> uses;
     for (const fs::path& f : files) {

@@ -42,9 +42,9 @@ struct IncrementResult {
 // Advances `state` by one increment; `guess` is the starting strain increment (for example the
 // previous one). Converged only when every row's residual is below its tolerance AND the last
 // Newton correction is below the strain tolerance (plus 1e-8 of the increment). On failure the
-// state is unchanged.
+// state is unchanged. `void_ratio_offset`: a nonlocal offset every material update takes.
 IncrementResult solve_increment(const Material& material, State& state, const LinearControl& control,
-                                const Sym& guess, const NewtonOptions& options = {});
+                                const Sym& guess, const NewtonOptions& options = {}, double void_ratio_offset = 0.0);
 
 // Presets in the test frame (1 = axial): the control of one increment of d_eps_axial.
 LinearControl drained_triaxial(double axial_strain_increment);    // sigma_2, sigma_3 held, no shear

@@ -77,6 +77,9 @@ struct InitialState {
   std::optional<Sym> fabric;
   std::optional<double> H;
   std::optional<double> substep_hint;
+  // A host's nonlocal offset of the void ratio (Material::update), applied to every increment: a
+  // reproducer of a regularised MPM particle's update replays with it (0: the local model).
+  double void_ratio_offset = 0.0;
 };
 
 struct SolverSettings {

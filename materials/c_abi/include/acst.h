@@ -174,8 +174,10 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
  * offsets "averaged minus its own" at the start of the increment; the model takes the averaged
  * quantities where its softening comes from and keeps stress, strain and all else local.
  *   ACST, isotropic: one quantity, "void_ratio": the state parameter psi = e - e_c(p), which sets
- *       the dilatancy and the peak, takes e + offset over the increment (e evolving with the
- *       increment's own volume change); the elasticity and the hardening keep e.
+ *       the dilatancy and the peak, becomes psi + offset over the increment (e evolving with the
+ *       increment's own volume change), but no looser than critical (psi + offset > 0) unless
+ *       the point is looser itself: min(psi + offset, max(psi, 0)); the elasticity and the
+ *       hardening keep e.
  *   linear_elastic, von_mises: none (nothing softens); an offset argument is ignored.
  * acst_nonlocal_size: the number of quantities (0 or 1; 0 for a NULL handle); acst_nonlocal_name
  * their names (NULL out of range); acst_nonlocal_local: a point's local values (acst_nonlocal_size

@@ -59,7 +59,7 @@ class SandKind final : public ModelKind {
   }
 
   // One quantity nonlocally, the void ratio: its offset moves the state parameter (docs/model.md
-  // section 9).
+  // section 11).
   int nonlocal_size() const override { return 1; }
   const char* nonlocal_name(int i) const override { return i == 0 ? "void_ratio" : nullptr; }
   void nonlocal_local(double* out, const double*, const double* statev) const override {

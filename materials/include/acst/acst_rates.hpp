@@ -35,8 +35,8 @@ struct PlasticQuantities {
 
 // With the stress ratio state of sigma already at hand (see AcstRates::ratio_state).
 // `void_ratio_offset`: a host's nonlocal void ratio minus the point's own (docs/model.md section
-// 9): the state parameter, and through it the dilatancy and the peak, take e + offset; the
-// elasticity and the hardening keep e. 0 is the local model.
+// 11): the state parameter, and through it the dilatancy and the peak, take it
+// (nonlocal_state_parameter); the elasticity and the hardening keep e. 0 is the local model.
 inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& sigma, const Sym& F, double e,
                                             const StressRatioState& ratio, double void_ratio_offset = 0.0) {
   PlasticQuantities q;
@@ -44,7 +44,7 @@ inline PlasticQuantities plastic_quantities(const Parameters& prm, const Sym& si
   q.ratio = ratio;
   const double g = q.ratio.lode.g;
   set_elastic_moduli(q.moduli, prm, e, q.p, F);
-  q.psi = state_parameter(prm, e + void_ratio_offset, q.p);
+  q.psi = nonlocal_state_parameter(state_parameter(prm, e, q.p), void_ratio_offset);
   q.A = fabric_anisotropy_variable(F, q.ratio.n);
   q.zeta = dilatancy_state_parameter(q.psi, prm.e_A, q.A);
   q.D = dilatancy(prm.d1, prm.m, q.zeta, q.ratio.R, prm.Mc, g);

@@ -24,4 +24,13 @@ inline double state_parameter(const Parameters& prm, double e, double p) {
   return state_parameter(e, critical_void_ratio(prm, p));
 }
 
+// The state parameter of a host's nonlocal regularisation (docs/model.md section 11): psi + offset,
+// the offset being the host's averaged void ratio minus the point's own, but no looser than
+// critical unless the point is looser itself. The averaging carries a band's softening (its
+// approach to the critical state) into the soil around it; a point that dense soil surrounds,
+// told that it is looser than critical, would contract at a rate exp(m zeta) that its own
+// stiffness cannot carry (a non-positive loading-index denominator: measured in the MPM's
+// biaxial test, docs/footing-study.md, "The regularised biaxial test"). With no offset, psi.
+ACST_INLINE double nonlocal_state_parameter(double psi, double offset) { return min_of(psi + offset, max_of(psi, 0.0)); }
+
 }  // namespace acst

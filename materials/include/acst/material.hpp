@@ -41,7 +41,7 @@ class Material {
   // On failure the state is left as it was and the report asks for a smaller increment.
   // If tangent is given it receives d(stress)/d(strain) (continuum tangent at the end state).
   // `void_ratio_offset`: a host's nonlocal void ratio minus the state's own at the start of the
-  // increment (docs/model.md section 9; finite, below void_ratio_limit in size); 0: local.
+  // increment (docs/model.md section 11; finite, below void_ratio_limit in size); 0: local.
   integration::Report update(State& state, const Sym& strain_increment, Mat6* tangent = nullptr,
                              double void_ratio_offset = 0.0) const;
 

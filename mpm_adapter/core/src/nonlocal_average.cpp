@@ -8,16 +8,35 @@
 
 namespace acst::mpm {
 
-double nonlocal_weight(NonlocalKernel kernel, double r, double l) {
-  const double s = r / l;
-  if (s > nonlocal_reach) return 0.0;
+namespace {
+
+// The kernel's formula at s = r/l, without the reach.
+double kernel_formula(NonlocalKernel kernel, double s) {
   const double g = std::exp(-s * s);
   return kernel == NonlocalKernel::gauss ? g : s * g;
 }
 
+}  // namespace
+
+double nonlocal_weight(NonlocalKernel kernel, double r, double l) {
+  const double s = r / l;
+  return s < nonlocal_reach ? kernel_formula(kernel, s) : 0.0;
+}
+
+KernelTable::KernelTable(NonlocalKernel kernel) : values_(intervals + 2), scale_(intervals / nonlocal_reach) {
+  for (std::size_t i = 0; i <= intervals; ++i) values_[i] = kernel_formula(kernel, i / scale_);
+  values_[intervals + 1] = values_[intervals];  // read by s just under the reach, at t near 1
+}
+
 NonlocalAverage::NonlocalAverage(double length, NonlocalKernel kernel, std::vector<int> takes_part,
                                  std::optional<double> mirror_x)
-    : length_(length), skin_(0.25 * length), kernel_(kernel), takes_part_(std::move(takes_part)), mirror_x_(mirror_x) {
+    : length_(length),
+      inverse_length_(1.0 / length),
+      skin_(0.25 * length),
+      kernel_(kernel),
+      table_(kernel),
+      takes_part_(std::move(takes_part)),
+      mirror_x_(mirror_x) {
   if (!(length > 0.0) || !std::isfinite(length)) throw std::invalid_argument("the internal length must be positive");
 }
 
@@ -109,6 +128,8 @@ void NonlocalAverage::average(const Particles& P, const double* value, double* m
   for (std::size_t p = 0; p < P.n && !stale; ++p)
     stale = takes_part_[p] && std::hypot(P.x[p] - x_found_[p], P.y[p] - y_found_[p]) > 0.5 * skin_;
   if (stale) find_neighbours(P, threads);
+  volume_.resize(P.n);
+  common::parallel_for(threads, P.n, [&](int, std::size_t p) { volume_[p] = P.volume(p); });
   common::parallel_for(threads, P.n, [&](int, std::size_t p) {
     if (!takes_part_[p]) return;
     double sum = 0.0, weight_sum = 0.0;
@@ -116,7 +137,7 @@ void NonlocalAverage::average(const Particles& P, const double* value, double* m
       const std::size_t q = neighbour_[k];
       double w = weight(P.x[q] - P.x[p], P.y[q] - P.y[p]);
       if (mirror_x_) w += weight(2.0 * *mirror_x_ - P.x[q] - P.x[p], P.y[q] - P.y[p]);
-      const double wV = w * P.volume(q);
+      const double wV = w * volume_[q];
       sum += wV * value[q];
       weight_sum += wV;
     }

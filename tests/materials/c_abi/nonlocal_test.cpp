@@ -89,8 +89,8 @@ TEST(NonlocalAbi, NullOrZeroOffsetsGiveTheLocalNumbersToTheBit) {
 
 // The offset is where the state parameter takes the averaged void ratio: an elastic increment
 // (inside the surface) does not read it, while under a plastic one at constant volume a dense
-// point, which would dilate, gains mean stress, and with an offset that makes it looser than
-// critical it would contract, so it loses mean stress and carries less shear.
+// point, which would dilate, gains mean stress, and with an offset that brings it to the critical
+// state (no looser: an offset beyond gives the same numbers) loses it and carries less shear.
 TEST(NonlocalAbi, AnOffsetMovesTheStateParameterAlone) {
   const AbiModel sand(sand_json());
   const Point P = dense_point(sand.get(), 100.0, 0.25, 0.66);
@@ -110,6 +110,11 @@ TEST(NonlocalAbi, AnOffsetMovesTheStateParameterAlone) {
   EXPECT_LT(p(looser), p(P) - 0.1) << "contractant: p falls";
   EXPECT_LT(std::fabs(looser.stress[3]), std::fabs(dense.stress[3]));
   EXPECT_EQ(looser.statev[6], dense.statev[6]) << "the void ratio follows the strain alone";
+  Point further = P;
+  const double much_looser = 1.0;
+  ASSERT_EQ(acst_update_nonlocal(further.stress, further.statev, nullptr, nullptr, sand.get(), shear, &much_looser).code,
+            ACST_OK);
+  EXPECT_TRUE(same_bits(further.stress, looser.stress, 6)) << "no looser than critical";
 }
 
 // The batch with offsets against the single call point by point: the same codes and bits, with

@@ -13,6 +13,7 @@
 
 #include "acst.h"
 #include "acst_common/input_error.hpp"
+#include "acst_footing_tool/particle_histories.hpp"
 #include "acst_mpm/material_frame.hpp"
 #include "acst_footing_tool/runner.hpp"
 #include "mpm_scenes.hpp"

@@ -28,7 +28,7 @@ enum class NonlocalQuantity { void_ratio_increments, void_ratio };
 // steps.
 struct Regularisation {
   double internal_length = 0.0;
-  NonlocalKernel kernel = NonlocalKernel::gauss;
+  NonlocalKernel kernel = NonlocalKernel::galavi_schweiger;
   NonlocalQuantity quantity = NonlocalQuantity::void_ratio_increments;
   double over_nonlocal = 1.0;
   int every = 20;

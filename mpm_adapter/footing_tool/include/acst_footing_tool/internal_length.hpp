@@ -13,7 +13,7 @@ namespace acst::mpm {
 
 inline constexpr double toyoura_d50_mm = 0.17;  // Toyoura sand's d50 (0.16-0.19 mm in the sources)
 inline constexpr double band_thickness_in_d50 = 15.0;
-inline constexpr double band_per_length = 2.0;
+inline constexpr double band_per_length = 0.9;
 
 // l (m) for grains of d50 (mm) in a model at `acceleration_level` g.
 inline double internal_length_from_grains(double d50_mm, double acceleration_level) {

@@ -1,0 +1,147 @@
+#!/usr/bin/env python3
+"""The Kimura footings V85.6 and H86.7 with the regularised sand (docs/footing-study.md, "The
+regularised footing"; results in bench/results/footing_regularised/).
+
+Each case is the half-domain convergence scene of its test (data/scenes/mpm/convergence/, one
+stress update per step, the delivered set) at a cell size, with the regularisation at its
+default internal length (from Toyoura's grains at Kimura's 30 g) or the local model, at a
+loading speed (a factor of the study's 0.045 m/s) and a CFL number. A case whose summary.json
+exists is not run again (the study resumes). Writes OUT/convergence.csv (one row per run:
+case, cell_m, internal_length_m, speed_factor, cfl, q_ult_kPa, S_ult_over_B, wall_s, and the
+first peak, q at S/B 0.1 and 0.25), OUT/<test>_curves.png (the runs over the centrifuge curve)
+and OUT/q_ult_against_h.png.
+
+  python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
+  CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5]   (TEST V85.6 or H86.7)
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_paths
+
+SCENES = os.path.join(ROOT, "data", "scenes", "mpm", "convergence")
+BASE = {"V85.6": "kimura_V85.6_alpha0_h0045.json", "H86.7": "kimura_H86.7_alpha90_h0045.json"}
+FIELDS = ["case", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
+          "q_first_peak_kPa", "S_first_peak_over_B", "q_at_SB0.1_kPa", "q_at_SB0.25_kPa", "final_S_over_B",
+          "max_kinetic_ratio", "status"]
+
+
+def parse_case(text):
+    parts = text.split(",")
+    c = {"test": parts[0], "h": None, "l": "default", "speed": 1.0, "cfl": 0.5}
+    for p in parts[1:]:
+        k, v = p.split("=", 1)
+        c[k] = v if k == "l" else float(v)
+    tag = f"{c['test']}_h{c['h']:g}_l{c['l']}_v{c['speed']:g}_cfl{c['cfl']:g}"
+    c["name"] = tag.replace(".", "p")
+    return c
+
+
+def scene_of(c, stop, threads):
+    s = scene_with_absolute_paths(os.path.join(SCENES, BASE[c["test"]]))
+    s["name"] = c["name"]
+    s["grid"]["cell_size"] = c["h"]
+    s["footing"]["speed"] *= c["speed"]
+    s["solver"]["cfl"] = c["cfl"]
+    s["solver"]["threads"] = threads
+    s["stop"] = {"S_over_B": stop}
+    s["output"]["checkpoint_every_s"] = 600
+    if c["l"] == "default":
+        s["regularisation"] = {"acceleration_level": 30}  # Kimura's centrifuge; Toyoura's d50
+    elif float(c["l"]) > 0:
+        s["regularisation"] = {"internal_length_m": float(c["l"])}
+    return s
+
+
+def interpolate(S, q, at):
+    for i in range(1, len(S)):
+        if S[i - 1] <= at <= S[i]:
+            return q[i - 1] + (q[i] - q[i - 1]) * (at - S[i - 1]) / (S[i] - S[i - 1])
+    return float("nan")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "footing_regularised"))
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--stop", type=float, default=0.25, help="S/B to run to")
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    ap.add_argument("cases", nargs="+")
+    a = ap.parse_args()
+    os.makedirs(os.path.join(a.out, "scenes"), exist_ok=True)
+    rows = []
+    for text in a.cases:
+        c = parse_case(text)
+        run_dir = os.path.join(a.out, c["name"])
+        summary_file = os.path.join(run_dir, "summary.json")
+        if not os.path.exists(summary_file):
+            path = os.path.join(a.out, "scenes", c["name"] + ".json")
+            with open(path, "w") as f:
+                json.dump(scene_of(c, a.stop, a.threads), f, indent=1)
+            run = subprocess.run([a.tool, "--quiet", "--output", run_dir, path], capture_output=True, text=True)
+            if run.returncode != 0:
+                rows.append({"case": c["name"], "cell_m": c["h"], "status": "failed: " + run.stderr.strip()[:200]})
+                print(json.dumps(rows[-1]), flush=True)
+                continue
+        with open(summary_file) as f:
+            s = json.load(f)
+        S, q = read_curve(os.path.join(run_dir, "load_settlement.csv"))
+        with open(os.path.join(a.out, "scenes", c["name"] + ".json")) as f:
+            scene = json.load(f)
+        l = scene.get("regularisation", {}).get("internal_length_m", None)
+        r = {"case": c["name"], "cell_m": c["h"], "internal_length_m": 0.0 if c["l"] == "0" else (l if l else "default"),
+             "speed_factor": c["speed"], "cfl": c["cfl"], "q_ult_kPa": round(s["q_ult_kPa"], 1),
+             "S_ult_over_B": round(s["S_ult_over_B"], 4), "wall_s": round(s["wall_s"], 1),
+             "q_first_peak_kPa": s["q_first_peak_kPa"] and round(s["q_first_peak_kPa"], 1),
+             "S_first_peak_over_B": s["S_first_peak_over_B"] and round(s["S_first_peak_over_B"], 4),
+             "q_at_SB0.1_kPa": round(interpolate(S, q, 0.1), 1), "q_at_SB0.25_kPa": round(interpolate(S, q, 0.25), 1),
+             "final_S_over_B": round(s["final_S_over_B"], 4), "max_kinetic_ratio": s["max_kinetic_ratio"], "status": "done"}
+        rows.append(r)
+        print(json.dumps(r), flush=True)
+    write_table_and_figures(a.out, rows)
+
+
+LOCAL = os.path.join(ROOT, "bench", "results", "footing_convergence", "convergence.csv")
+
+
+def write_table_and_figures(out, rows):
+    table = os.path.join(out, "convergence.csv")
+    old = []
+    if os.path.exists(table):
+        with open(table) as f:
+            old = [r for r in csv.DictReader(f) if r["case"] not in {x["case"] for x in rows}]
+    with open(table, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(old + rows)
+    with open(table) as f:
+        every = [r for r in csv.DictReader(f) if r["status"] == "done"]
+    # q_ult against the cell: the local model's study (bench/results/footing_convergence/, the same
+    # numbers as today's local code) and the regularised runs at the study's speed and CFL.
+    with open(LOCAL) as f:
+        local = [r for r in csv.DictReader(f) if "ppc" not in r["scene"]]
+    lines = ["set terminal pngcairo size 1300,520 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h.png'))}",
+             "set multiplot layout 1,2", "set grid", "set key top left", "set xlabel 'cell size h [m]'",
+             "set ylabel 'q_ult [kPa]'", "set xrange [0:0.2]", "set yrange [0:2600]"]
+    kimura = {"V85.6": 1953, "H86.7": 1734}
+    for test in ("V85.6", "H86.7"):
+        loc = sorted((float(r["cell"]), float(r["q_ult_kPa"])) for r in local if r["test"] == test)
+        reg = sorted((float(r["cell_m"]), float(r["q_ult_kPa"])) for r in every
+                     if r["case"].startswith(test.replace(".", "p")) and r["internal_length_m"] not in ("0", "0.0")
+                     and float(r["speed_factor"]) == 1.0 and float(r["cfl"]) == 0.5)
+        data = lambda pts: "\n".join(f"{x} {y}" for x, y in pts) + "\ne"
+        lines += [f"set title {gp_quoted(test + ': the largest load against the cell (S/B up to 0.25)')}",
+                  f"plot '-' using 1:2 with linespoints lw 2 pt 7 title 'local (ACST, no internal length)', "
+                  f"'-' using 1:2 with linespoints lw 2 pt 5 title 'regularised, l = 0.085 m (from the grains)', "
+                  f"{kimura[test]} with lines dt 2 lc rgb 'black' title 'Kimura et al. (1985)'",
+                  data(loc), data(reg)]
+    lines += ["unset multiplot", ""]
+    subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
+
+
+if __name__ == "__main__":
+    main()

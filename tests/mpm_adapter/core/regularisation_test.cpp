@@ -1,0 +1,92 @@
+// The sand's regularisation as a whole (docs/mpm.md, "Nonlocal regularisation"): where the field
+// is homogeneous the averaged void ratio is the particle's own, and every bundled element scene
+// run with the offset a homogeneous patch of particles gets gives its local result; an internal
+// length of 0 is the local model to the bit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include "acst_driver/runner.hpp"
+#include "acst_driver/scene.hpp"
+#include "acst_mpm/nonlocal_average.hpp"
+#include "mpm_scenes.hpp"
+
+namespace mpm_regularisation_test {
+
+using namespace acst::mpm;
+namespace fs = std::filesystem;
+
+// The largest offset a lattice of particles of one void ratio gets from the average (a patch of
+// 0.5 x 0.5 m at 0.01 m, l = 0.05: its middle and its edges, where the sums are truncated).
+double homogeneous_offset(double e, NonlocalKernel kernel) {
+  Particles P;
+  const int side = 50;
+  P.resize(side * side, 0);
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j * side + i);
+      P.x[p] = 0.005 + 0.01 * i;
+      P.y[p] = 0.005 + 0.01 * j;
+      P.volume_initial[p] = 1e-4;
+    }
+  std::vector<double> value(P.n, e), mean(P.n);
+  NonlocalAverage(0.05, kernel, std::vector<int>(P.n, 1), std::nullopt).average(P, value.data(), mean.data(), 1);
+  double worst = 0.0;
+  for (double m : mean) worst = std::max(worst, std::fabs(m - e));
+  return worst;
+}
+
+TEST(Regularisation, AHomogeneousFieldGivesTheLocalResultInEveryBundledElementScene) {
+  int scenes = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(ACST_SOURCE_DIR) / "data/scenes/element")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    const acst::driver::ElementScene local = acst::driver::read_scene(entry.path().string());
+    acst::driver::ElementScene nonlocal = local;
+    const double e0 = local.initial.void_ratio;
+    nonlocal.initial.void_ratio_offset = homogeneous_offset(e0, NonlocalKernel::galavi_schweiger);
+    // The average of one value is that value, to the rounding of a sum of a few hundred terms.
+    ASSERT_LE(nonlocal.initial.void_ratio_offset, 1e-13 * e0);
+    if (nonlocal.initial.void_ratio_offset == 0.0) nonlocal.initial.void_ratio_offset = 1e-15;  // a rounding's worth
+    const acst::driver::RunResult a = acst::driver::run_scene(local), b = acst::driver::run_scene(nonlocal);
+    ASSERT_EQ(a.ok, b.ok) << b.message;
+    ASSERT_EQ(a.records.size(), b.records.size());
+    double scale = 0.0, worst = 0.0;
+    for (const auto& r : a.records) scale = std::max(scale, acst::norm(r.stress));
+    for (std::size_t k = 0; k < a.records.size(); ++k) {
+      worst = std::max(worst, acst::norm(a.records[k].stress - b.records[k].stress) / scale);
+      worst = std::max(worst, std::fabs(a.records[k].void_ratio - b.records[k].void_ratio));
+    }
+    EXPECT_LT(worst, 1e-12);
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 30);
+}
+
+// A small dense-sand footing run 300 steps with "internal_length_m": 0 against the same scene
+// without the key: the same particles, to the bit.
+TEST(Regularisation, AnInternalLengthOfZeroIsTheLocalModel) {
+  const std::string sand = std::string(ACST_SOURCE_DIR) + "/data/parameters/toyoura_acst_calibrated.json";
+  const auto scene = [&](const std::string& extra) {
+    return R"({"name": "t", "grid": {"cell_size": 0.1}, "materials": {"sand": ")" + sand +
+           R"("}, "bodies": [{"material": "sand", "x_range": [0, 2], "y_range": [0, 1], "density": 1600,
+           "relative_density_pct": 85, "bedding_angle_deg": 0}], "gravity": 9.8,
+           "initial_stress": {"type": "geostatic", "K0": 0.4}, "surcharge_kPa": 1,
+           "footing": {"width": 0.4, "centre_x": 1.0, "speed": 0.05}, "stop": {"steps": 300})" + extra + "}";
+  };
+  Simulation a = mpm_test::build(scene("")), b = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0})"));
+  for (int k = 0; k < 300; ++k) a.step(), b.step();
+  EXPECT_EQ(a.particles().stress, b.particles().stress);
+  EXPECT_EQ(a.particles().statev, b.particles().statev);
+  EXPECT_EQ(a.particles().x, b.particles().x);
+  // And with a length the same scene's particles carry offsets (the averaging ran).
+  Simulation c = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0.2})"));
+  for (int k = 0; k < 300; ++k) c.step();
+  const auto& d = c.particles().void_ratio_offset;
+  EXPECT_GT(*std::max_element(d.begin(), d.end()) - *std::min_element(d.begin(), d.end()), 1e-7);
+}
+
+}  // namespace mpm_regularisation_test
