@@ -11,7 +11,7 @@ band, between two axial strains after the peak).
 
   python3 bench/studies/biaxial_band.py --out DIR [--threads 2] CASE ...
   CASE: h=0.025,l=0.05[,kernel=gauss|galavi_schweiger][,averaged=void_ratio_increments|void_ratio]
-        (l=0: the local model)
+        [,m=1][,every=20][,weak=0.1]   (l=0: the local model; weak: the imperfection's side, m)
 """
 import argparse
 import csv
@@ -33,14 +33,15 @@ WEAK = {"size": 0.1, "y": 0.5, "void_ratio_increase": 0.05}
 def scene(case, speed, strain_to):
     h, l = case["h"], case["l"]
     e_dense = None  # from the relative density, through the material
-    weak_lo, weak_hi = WEAK["y"], WEAK["y"] + WEAK["size"]
+    weak = float(case.get("weak", WEAK["size"]))  # the imperfection's side
+    weak_lo, weak_hi = WEAK["y"], WEAK["y"] + weak
     base = {"material": "toyoura", "density": 1600, "particles_per_cell": 1, "bedding_angle_deg": 0}
     # The void ratio of Dr 85.6 % (e_max 0.977, e_min 0.597 of the delivered set): the weak square is looser.
     e0 = 0.977 - DR / 100.0 * (0.977 - 0.597)
     bodies = [dict(base, name="below", x_range=[0, WIDTH], y_range=[0, weak_lo], void_ratio=e0),
-              dict(base, name="weak", x_range=[0, WEAK["size"]], y_range=[weak_lo, weak_hi],
+              dict(base, name="weak", x_range=[0, weak], y_range=[weak_lo, weak_hi],
                    void_ratio=e0 + WEAK["void_ratio_increase"]),
-              dict(base, name="beside", x_range=[WEAK["size"], WIDTH], y_range=[weak_lo, weak_hi], void_ratio=e0),
+              dict(base, name="beside", x_range=[weak, WIDTH], y_range=[weak_lo, weak_hi], void_ratio=e0),
               dict(base, name="above", x_range=[0, WIDTH], y_range=[weak_hi, HEIGHT], void_ratio=e0)]
     s = {"name": case["name"],
          "description": "Plane-strain biaxial compression of dense Toyoura sand (bench/studies/biaxial_band.py)",
@@ -168,7 +169,7 @@ def parse_case(text, threads):
             c[k] = v
     tag = f"h{c['h_text']}_l{c['l_text']}" + (f"_{c['kernel']}" if "kernel" in c else "") + (
         f"_{c['averaged']}" if "averaged" in c else "") + (f"_m{c['m']}" if "m" in c else "") + (
-        f"_every{c['every']}" if "every" in c else "")
+        f"_every{c['every']}" if "every" in c else "") + (f"_weak{c['weak']}" if "weak" in c else "")
     c["name"] = "biaxial_" + tag.replace(".", "p")
     return c
 

@@ -311,7 +311,8 @@ acst_status acst_update_rotated_batch_nonlocal(double* stress, size_t stress_str
           continue;
         }
         const double* point_offset = offset && per_point > 0 ? offset + per_point * i : nullptr;
-        if (const std::string p = offset_problem(*model, point_offset); !p.empty()) {
+        // Checked only where given: the local model's points (no offsets) pay nothing here.
+        if (const std::string p = point_offset ? offset_problem(*model, point_offset) : std::string(); !p.empty()) {
           if (point_status) point_status[i] = ACST_INVALID_INPUT;
           if (point_counters) point_counters[i] = acst_counters{};
           note_failure(i, ACST_INVALID_INPUT, ("acst_update_rotated_batch_nonlocal: " + p).c_str(), 1.0);
