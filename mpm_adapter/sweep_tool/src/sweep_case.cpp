@@ -85,6 +85,37 @@ constexpr const char* table_columns[] = {
     "load_file", "resumed", "message"};
 constexpr const char* table_column_prefixes[] = {load_at_prefix, "sheared_area_", "heave_"};
 
+// The row's columns from acst_mpm's summary.json of the case: the side measures
+// ("sides": {"at_peak": {"heave_left_m": ...}, ...} as heave_left_at_peak_m, ...) and a few
+// figures of the run. A kept case's summary may have been edited or damaged: one of another
+// shape is refused naming the file and the field (it ended in the library's own error, such as
+// basic_string::substr, naming nothing).
+void add_summary_columns(ordered_json& row, const std::string& summary_file) {
+  namespace f = common::fields;
+  const json summary = f::read_json_file(summary_file, "the run's summary");
+  try {
+    f::object(summary, "");
+    if (summary.contains("sides") && !summary["sides"].is_null()) {  // null: a scene without a footing
+      const json& sides = f::object(summary["sides"], "/sides");
+      for (const char* when : {"at_peak", "at_end"}) {
+        if (!sides.contains(when)) continue;
+        const std::string at = std::string("/sides/") + when;
+        for (const auto& item : f::object(sides[when], at).items()) {
+          const std::string& key = item.key();
+          const std::size_t unit = key.rfind('_');  // "_m2", "_m"
+          if (unit == std::string::npos || unit == 0)
+            f::fail(at + "/" + key, "expected a measure named with its unit (heave_left_m, sheared_area_left_m2)");
+          row[key.substr(0, unit) + "_" + when + key.substr(unit)] = item.value();
+        }
+      }
+    }
+  } catch (const common::InputError& e) {
+    throw common::InputError("the run's summary '" + summary_file + "': " + e.what());
+  }
+  for (const char* k : {"quasi_static", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads"})
+    if (summary.contains(k)) row[k] = summary[k];
+}
+
 }  // namespace
 
 bool is_table_column(const std::string& name) {
@@ -167,17 +198,7 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, CaseStatus sta
     row["peak_reached"] = curve.V.back() < 0.98 * *peak;
   }
   const std::string summary_file = (fs::path(dir) / "summary.json").string();
-  if (status == CaseStatus::done && fs::exists(summary_file)) {
-    const json summary = common::fields::read_json_file(summary_file, "the run's summary");
-    for (const char* when : {"at_peak", "at_end"})
-      if (summary.contains("sides") && summary["sides"].contains(when))
-        for (const auto& item : summary["sides"][when].items()) {
-          const std::string key = item.key(), unit = key.substr(key.rfind('_'));  // "_m2", "_m"
-          row[key.substr(0, key.size() - unit.size()) + "_" + when + unit] = item.value();
-        }
-    for (const char* k : {"quasi_static", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads"})
-      if (summary.contains(k)) row[k] = summary[k];
-  }
+  if (status == CaseStatus::done && fs::exists(summary_file)) add_summary_columns(row, summary_file);
   row["load_file"] = fs::exists(load_file) ? fs::path(load_file).filename().string() : "";
   row["message"] = message;
   return row;

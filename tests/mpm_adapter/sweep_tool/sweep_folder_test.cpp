@@ -193,6 +193,17 @@ TEST(SweepFolder, ADamagedCaseRecordIsRefusedNamingItsFileAndField) {
   const Cli c = sweep({"--quiet", "--no-plot", "--output", out.string(), file.string()});
   EXPECT_EQ(c.rc, 2);
   EXPECT_NE(c.err.find("the case record '" + record.string() + "': not valid JSON"), std::string::npos) << c.err;
+  // The kept case's summary, read for its row's side measures, likewise (it ended in
+  // basic_string::substr naming nothing).
+  write(record, good.dump(2));
+  const fs::path summary = out / "cases" / "a" / "summary.json";
+  json spoilt = read_json(summary);
+  spoilt["sides"]["at_peak"] = 5;
+  write(summary, spoilt.dump(2));
+  const Cli s = sweep({"--quiet", "--no-plot", "--output", out.string(), file.string()});
+  EXPECT_EQ(s.rc, 2);
+  EXPECT_NE(s.err.find("the run's summary '" + summary.string() + "': /sides/at_peak: expected a JSON object"), std::string::npos)
+      << s.err;
 }
 
 // The cap of 10000 cases counted only the products of 'vary': two million plain entries ended
