@@ -67,6 +67,7 @@ int cross_validation_cli(const std::string& file, const common::CliArgs& cli, st
     if (cli.threads >= 0) spec.optimizer.threads = cli.threads;
     directory = cli.output.empty() ? spec.output_dir + "_cross_validation" : cli.output;
     common::require_own_folder(directory, [&](const std::string& e) { return is_cross_validation_output_name(spec.name, e); });
+    common::require_replaceable_folder(directory);
   } catch (const common::InputError& e) {
     err << "acst_fit: " << file << ": " << e.what() << '\n';
     return 2;
@@ -119,6 +120,7 @@ int fit_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     if (!output.empty()) spec.output_dir = output;
     // Before hours of fitting, not after: the result set replaces the folder as a whole.
     common::require_own_folder(spec.output_dir, [&](const std::string& e) { return is_fit_output_name(spec.name, e); });
+    common::require_replaceable_folder(spec.output_dir);
   } catch (const common::InputError& e) {
     err << "acst_fit: " << file << ": " << e.what() << '\n';
     return 2;

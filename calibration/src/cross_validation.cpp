@@ -13,6 +13,7 @@
 #include "acst_calibration/problem.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
+#include "acst_common/png_file.hpp"
 #include "acst_common/result_folder.hpp"
 
 namespace acst::calibration {
@@ -294,11 +295,14 @@ std::vector<std::string> write_cross_validation(const CrossValidation& cv, const
        << "     '' using 3 skip 1 title 'predicted (fold left out)' lc rgb '#d62728'\n";
     put(stem + ".gp", gp.str());
     // Run inside the folder: the script names its files relative to it, so it works where it is kept.
-    const std::string w = common::gnuplot_available() ? common::run_gnuplot_command(staging, common::shell_quoted(stem + ".gp"))
-                                                      : "gnuplot not found: no PNG figure (the CSV and .gp files are written)";
+    std::string w = common::gnuplot_available() ? common::run_gnuplot_command(staging, common::shell_quoted(stem + ".gp"))
+                                                : "gnuplot not found: no PNG figure (the CSV and .gp files are written)";
+    // The figure lies in the new set only: one cut short (a full disk) is taken out of it.
+    const std::string png = (fs::path(staging) / (stem + ".png")).string();
+    if (w.empty()) w = common::keep_complete_png(png, png);
     if (!w.empty()) warnings.push_back(w);
   }
-  common::publish_folder(staging, directory);
+  if (const std::string w = common::publish_folder(staging, directory); !w.empty()) warnings.push_back(w);
   return warnings;
 }
 

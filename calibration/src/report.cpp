@@ -10,6 +10,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
 #include "acst_common/name_table.hpp"
+#include "acst_common/png_file.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
@@ -72,9 +73,14 @@ std::string panel(const Problem& problem, std::size_t k, const Series& s, std::s
 
 void write_text(const fs::path& p, const std::string& text) { common::write_file_atomically(p.string(), text); }
 
-// Runs gnuplot on `script` inside `dir` (its plots name their files relative to it).
-std::string run_gnuplot_in(const fs::path& dir, const std::string& script) {
-  const std::string w = common::run_gnuplot_command(dir.string(), common::shell_quoted(script));
+// Runs gnuplot on `script` inside `dir` (its plots name their files relative to it), which
+// writes its figure to `png` + ".tmp"; a whole PNG becomes `png`, anything else leaves no file
+// in the set (the warning says why).
+std::string draw_figure(const fs::path& dir, const std::string& script, const std::string& png) {
+  const std::string written = (dir / (png + ".tmp")).string();
+  std::string w = common::run_gnuplot_command(dir.string(), common::shell_quoted(script));
+  if (w.empty()) w = common::keep_complete_png(written, (dir / png).string());
+  std::remove(written.c_str());  // what a failed run left
   return w.empty() ? "" : (dir / script).string() + ": " + w;
 }
 
@@ -383,16 +389,13 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
     if (plot && !common::gnuplot_available()) {
       warnings.push_back("gnuplot not found: no PNG figures (the CSV and .gp files are written)");
     } else if (plot) {
-      for (const ExperimentSpec& x : spec.experiments) {
-        const std::string w = run_gnuplot_in(scratch / "curves", x.id + ".gp");
-        if (w.empty()) fs::rename(scratch / "curves" / (x.id + ".png.tmp"), scratch / "curves" / (x.id + ".png"));
-        else warnings.push_back(w);
-      }
-      const std::string w = run_gnuplot_in(scratch, spec.name + "_overview.gp");
-      if (w.empty()) fs::rename(scratch / (spec.name + "_overview.png.tmp"), scratch / (spec.name + "_overview.png"));
-      else warnings.push_back(w);
+      for (const ExperimentSpec& x : spec.experiments)
+        if (const std::string w = draw_figure(scratch / "curves", x.id + ".gp", x.id + ".png"); !w.empty())
+          warnings.push_back(w);
+      if (const std::string w = draw_figure(scratch, spec.name + "_overview.gp", spec.name + "_overview.png"); !w.empty())
+        warnings.push_back(w);
     }
-    common::publish_folder(scratch.string(), directory);
+    if (const std::string w = common::publish_folder(scratch.string(), directory); !w.empty()) warnings.push_back(w);
   } catch (...) {
     std::error_code ec;
     fs::remove_all(scratch, ec);

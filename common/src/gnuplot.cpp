@@ -1,14 +1,25 @@
 #include "acst_common/gnuplot.hpp"
 
-#include <atomic>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
-#include <filesystem>
 
 #include "acst_common/files.hpp"
+#include "acst_common/png_file.hpp"
 
 namespace acst::common {
+
+namespace {
+
+// Of gnuplot's messages, the start goes into a warning.
+constexpr std::size_t max_message_bytes = 600;
+
+}  // namespace
 
 std::string shell_quoted(const std::string& s) {
   std::string q = "'";
@@ -45,19 +56,22 @@ bool gnuplot_available() {
 
 std::string run_gnuplot_command(const std::string& dir, const std::string& args) {
   if (!gnuplot_available()) return "gnuplot was not found on PATH: no PNG written";
-  static std::atomic<unsigned> runs{0};  // one log per call, also from several threads
-  const std::string log =
-      temporary_name((std::filesystem::temp_directory_path() / "acst_gnuplot.log").string()) + "_" + std::to_string(runs++);
-  const std::string cmd = (dir.empty() ? std::string() : "cd " + shell_quoted(dir) + " && ") + "gnuplot " + args +
-                          " >" + shell_quoted(log) + " 2>&1";
-  const int rc = std::system(cmd.c_str());
+  // gnuplot's messages come back through a pipe: a log file under a shared temporary folder has
+  // a name others can guess, and a link planted there would have been followed and truncated.
+  const std::string cmd = (dir.empty() ? std::string() : "cd " + shell_quoted(dir) + " && ") + "gnuplot " + args + " 2>&1";
+  FILE* pipe = ::popen(cmd.c_str(), "re");
+  if (!pipe) return std::string("cannot start gnuplot: ") + std::strerror(errno);
   std::string output;
-  try {
-    output = read_input_file(log);
-  } catch (const std::exception&) {  // no log: the exit status still says what happened
-  }
-  std::remove(log.c_str());
-  return rc == 0 ? "" : "gnuplot failed (exit " + std::to_string(rc) + "): " + output.substr(0, 600);
+  char chunk[4096];
+  // Read to the end, keeping the start: gnuplot would block on a full pipe.
+  for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, pipe)) > 0;)
+    output.append(chunk, std::min(n, max_message_bytes - std::min(output.size(), max_message_bytes)));
+  const int status = ::pclose(pipe);
+  if (status == 0) return "";
+  const std::string how = status == -1          ? std::string("cannot be waited for")
+                          : WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
+                                                : "exit " + std::to_string(WEXITSTATUS(status));
+  return "gnuplot failed (" + how + "): " + output;
 }
 
 std::string run_gnuplot(const std::string& script, const std::string& gp_path, const std::string& png_path) {
@@ -68,14 +82,12 @@ std::string run_gnuplot(const std::string& script, const std::string& gp_path, c
     return e.what();
   }
   const std::string tmp_png = temporary_name(png_path);
-  std::string warning = run_gnuplot_command("", "-e " + shell_quoted("png=" + gp_quoted(tmp_png)) + " " + shell_quoted(gp_path));
+  const std::string warning = run_gnuplot_command("", "-e " + shell_quoted("png=" + gp_quoted(tmp_png)) + " " + shell_quoted(gp_path));
   if (!warning.empty()) {
     std::remove(tmp_png.c_str());
     return warning;
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp_png, png_path, ec);
-  return ec ? "cannot rename the PNG: " + ec.message() : "";
+  return keep_complete_png(tmp_png, png_path);
 }
 
 }  // namespace acst::common

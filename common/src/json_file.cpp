@@ -5,18 +5,30 @@
 
 namespace acst::common::fields {
 
+namespace {
+
+std::string where(const std::string& what, const std::string& named_at) {
+  return (named_at.empty() ? "" : named_at + ": ") + what + " ";
+}
+
+}  // namespace
+
 nlohmann::json read_json_file(const std::string& path, const std::string& what, const std::string& named_at) {
-  const std::string where = (named_at.empty() ? "" : named_at + ": ") + what + " ";
   std::string text;
   try {
     text = read_input_file(path);
   } catch (const InputError& e) {  // "'<path>': <reason>"
-    throw InputError(where + e.what());
+    throw InputError(where(what, named_at) + e.what());
   }
+  return parse_json_file_text(text, path, what, named_at);
+}
+
+nlohmann::json parse_json_file_text(const std::string& text, const std::string& path, const std::string& what,
+                                    const std::string& named_at) {
   try {
     return parse_document(text);
   } catch (const InputError& e) {
-    throw InputError(where + "'" + path + "': not valid JSON: " + e.what());
+    throw InputError(where(what, named_at) + "'" + path + "': not valid JSON: " + e.what());
   }
 }
 

@@ -1,6 +1,7 @@
 #include "acst_common/result_folder.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -47,11 +48,47 @@ std::string staging_folder_for(const std::string& dir) {
   return (p.parent_path() / ("." + p.filename().string() + ".new" + std::to_string(::getpid()))).string();
 }
 
-void publish_folder(const std::string& staging, const std::string& dir) {
+namespace {
+
+// Makes and removes a hidden folder in `folder`: what the result set's publishing needs there.
+void probe_writable(const fs::path& folder, const std::string& dir, const std::string& role) {
+  const fs::path probe = folder / (".acst_probe" + std::to_string(::getpid()));
+  if (::mkdir(probe.c_str(), 0700) != 0 && errno != EEXIST)
+    throw InputError("the output folder '" + dir + "' cannot be replaced by a new result set: " + role + " '" +
+                     folder.string() + "' cannot be written (" + std::strerror(errno) + ")");
+  ::rmdir(probe.c_str());
+}
+
+// Removes the earlier set; "" or where it was left and why.
+std::string remove_earlier_set(const fs::path& earlier, const std::string& dir) {
+  std::error_code ec;
+  fs::remove_all(earlier, ec);
+  if (!ec) return "";
+  return "the new result set is in '" + dir + "', but the earlier one could not be removed (" + ec.message() +
+         "): it is left in '" + earlier.string() + "'";
+}
+
+}  // namespace
+
+void require_replaceable_folder(const std::string& dir) {
+  fs::path root = fs::absolute(dir).lexically_normal();
+  if (root.filename().empty()) root = root.parent_path();
+  std::error_code ec;
+  // The staging folder goes beside `dir`; folders still missing on the way there are made then.
+  fs::path parent = root.parent_path();
+  while (!fs::exists(parent, ec) && parent.has_relative_path()) parent = parent.parent_path();
+  probe_writable(parent, dir, "its parent folder");
+  if (!fs::is_directory(root, ec)) return;
+  probe_writable(root, dir, "the folder");
+  for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+    if (it->is_directory() && !it->is_symlink()) probe_writable(it->path(), dir, "its folder");
+}
+
+std::string publish_folder(const std::string& staging, const std::string& dir) {
   std::error_code ec;
   if (!fs::exists(dir, ec)) {
     fs::rename(staging, dir);
-    return;
+    return "";
   }
   if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, dir.c_str(), RENAME_EXCHANGE) != 0) {
     if (errno != EINVAL && errno != ENOSYS)
@@ -59,10 +96,9 @@ void publish_folder(const std::string& staging, const std::string& dir) {
     const std::string old = staging + ".old";
     fs::rename(dir, old);
     fs::rename(staging, dir);
-    fs::remove_all(old);
-    return;
+    return remove_earlier_set(old, dir);
   }
-  fs::remove_all(staging);  // now the earlier set
+  return remove_earlier_set(staging, dir);  // now the earlier set
 }
 
 std::size_t set_aside_earlier_run(const std::string& dir, const std::function<bool(const std::string&)>& is_own) {

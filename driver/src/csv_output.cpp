@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "acst/fabric.hpp"
 #include "acst/integration/options.hpp"
 #include "acst_common/one_line.hpp"
 #include "acst_driver/number_format.hpp"
@@ -47,7 +48,7 @@ std::string csv_comments(const ElementScene& scene) {
   std::snprintf(buf, sizeof buf, ", model %s, integrator %s stol %g\n", par.variant == Variant::isotropic ? "isotropic" : "ACST",
                 integration::scheme_name(opt.scheme), opt.stol);
   out += "# material: " + one_line(scene.material_source) + buf;
-  Eigen::Vector3d b = scene.initial.deposition_direction.normalized();
+  Eigen::Vector3d b = unit_direction(scene.initial.deposition_direction);  // as the fabric takes it
   for (int i = 0; i < 3; ++i) b[i] = std::abs(b[i]) < 1e-12 ? 0.0 : b[i];  // cos(90 deg) prints as 0
   std::snprintf(buf, sizeof buf,
                 "# initial state: sigma = %s kPa, e0 = %.4f, bedding angle %.4g deg (deposition direction [%.4g, %.4g, %.4g])%s\n",

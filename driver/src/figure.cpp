@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "acst/fabric.hpp"
 #include "acst_common/interpolate.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "acst_driver/output.hpp"
@@ -151,7 +152,7 @@ std::string write_figure(const ElementScene& scene, const PlotRanges& ranges, co
   for (const Block& bl : scene.blocks)
     for (const Step& st : bl.steps) undrained = undrained || st.undrained;
   const double q_pad = 0.05 * std::max(q_hi - q_lo, 1.0);
-  Eigen::Vector3d b = scene.initial.deposition_direction.normalized();
+  Eigen::Vector3d b = unit_direction(scene.initial.deposition_direction);  // as the fabric takes it
   for (int i = 0; i < 3; ++i) b[i] = std::abs(b[i]) < 1e-12 ? 0.0 : b[i];  // cos(90 deg) prints as 0
   char title[400];
   std::snprintf(title, sizeof title, "%s: %s model, e0 = %.3f, p0 = %.4g kPa, bedding angle %.3g deg (b = [%.3g, %.3g, %.3g])",

@@ -57,7 +57,12 @@ std::string LabCurve::text(const std::string& key) const {
 }
 
 LabCurve read_commented_csv(const std::string& path, bool text_as_nan) {
-  std::istringstream in(common::read_input_file(path));  // a regular file of bounded size, or why not
+  // A regular file of bounded size, or why not.
+  return parse_commented_csv(common::read_input_file(path), path, text_as_nan);
+}
+
+LabCurve parse_commented_csv(const std::string& text, const std::string& path, bool text_as_nan) {
+  std::istringstream in(text);
   LabCurve c;
   c.path = path;
   std::string line;
@@ -101,8 +106,10 @@ LabCurve read_commented_csv(const std::string& path, bool text_as_nan) {
   return c;
 }
 
-LabCurve read_lab_curve(const std::string& path) {
-  LabCurve c = read_commented_csv(path);
+LabCurve read_lab_curve(const std::string& path) { return parse_lab_curve(common::read_input_file(path), path); }
+
+LabCurve parse_lab_curve(const std::string& text, const std::string& path) {
+  LabCurve c = parse_commented_csv(text, path);
   if (c.column("eps_a_pct").empty() && c.values.empty())
     throw std::runtime_error(path + ": no data rows");
   bool has_axis = false;

@@ -89,8 +89,9 @@ void read_initial_state(const json& j, const std::string& path, ElementScene& sc
   } else if (bk == "deposition_direction") {
     const auto d = f::numbers(j[bk], path + "/" + bk, 3, "a non-zero direction in the test frame");
     s.deposition_direction = Eigen::Vector3d(d[0], d[1], d[2]);
-    if (!(s.deposition_direction.norm() > 0.0)) f::fail(path + "/" + bk, "must not be the zero vector");
-    s.bedding_angle_deg = std::acos(std::min(1.0, std::abs(s.deposition_direction.normalized()[0]))) * 180.0 / M_PI;
+    // The model's own test (acst/fabric.hpp): (1e-320, 0, 0) is a direction, as the C ABI takes it.
+    if (!usable_direction(s.deposition_direction)) f::fail(path + "/" + bk, "must not be the zero vector");
+    s.bedding_angle_deg = std::acos(std::min(1.0, std::abs(unit_direction(s.deposition_direction)[0]))) * 180.0 / M_PI;
   }
   if (j.contains("fabric")) {
     const auto v = f::numbers(j["fabric"], path + "/fabric", 6, "fabric tensor F_11 ... F_23, tensor components");

@@ -17,10 +17,12 @@ Material::Material(const Parameters& parameters, const integration::Options& opt
 
 State Material::initial_state(const Sym& stress, double void_ratio, const Eigen::Vector3d& deposition_direction) const {
   if (!stress.allFinite()) throw InputError("initial stress is not finite");
+  if (!stress_within_limit(stress.data()))
+    throw InputError("initial stress has a component beyond 1e100 kPa in size, where the model's arithmetic overflows");
   if (!(mean_stress(stress) >= parameters_.p_min))
     throw InputError("initial mean stress must be at least p_min = " + std::to_string(parameters_.p_min) + " kPa");
   if (!void_ratio_admissible(void_ratio)) throw InputError("initial void ratio must lie in (0, 2.97)");
-  if (!deposition_direction.allFinite() || !(deposition_direction.cwiseAbs().maxCoeff() > 0.0))
+  if (!usable_direction(deposition_direction))
     throw InputError("deposition direction must be a finite non-zero vector");
   State s;
   s.stress = stress;
@@ -40,8 +42,8 @@ AcstRates::Vector pack(const State& s) {
 }
 
 bool physical(const State& s) {
-  return s.stress.allFinite() && s.fabric.allFinite() && std::isfinite(s.H) && void_ratio_admissible(s.void_ratio) &&
-         s.H >= 0.0;
+  return s.stress.allFinite() && stress_within_limit(s.stress.data()) && s.fabric.allFinite() && std::isfinite(s.H) &&
+         void_ratio_admissible(s.void_ratio) && s.H >= 0.0;
 }
 
 }  // namespace

@@ -177,7 +177,7 @@ ACST_INLINE int admissible(const Constants& k, const double* y) {
   bool all = true;
   #pragma GCC unroll 13
   for (int i = 0; i < 13; ++i) all = all & finite(y[i]);
-  return all & void_ratio & (mean_stress(y) >= k.p_min);
+  return all & void_ratio & stress_within_limit(y) & (mean_stress(y) >= k.p_min);
 }
 
 template <bool WW>
@@ -197,7 +197,8 @@ void run(const Constants& k, UpdateLanes& L) {
     for (int i = 0; i < 13; ++i) entry = entry & finite(y.v[i]);
     #pragma GCC unroll 13
     for (int i = 0; i < 6; ++i) entry = entry & finite(deps[i]);
-    entry = entry & void_ratio_admissible(y.v[12]) & (std::abs(L.void_ratio_offset[l]) < void_ratio_limit);
+    entry = entry & void_ratio_admissible(y.v[12]) & stress_within_limit(y.v) &
+            (std::abs(L.void_ratio_offset[l]) < void_ratio_limit);
     // Material::update takes a hint that is no step size as 1, and a hint of 1 or more
     // starts with the whole increment (the substep is clamped to 1).
     const double hint = L.substep_hint[l];

@@ -3,8 +3,10 @@
 // elastic or von Mises material with moduli over many decades), a state (from acst_initial_state
 // or raw doubles) and a sequence of calls: acst_update with increments from 1e-12 to 10 (or any
 // double), acst_rotate_state, acst_update_rotated (and acst_update_rotated_batch on the same
-// point, which must give the same bits), acst_diagnostics, acst_wave_speed. Checked after every
-// call:
+// point, which must give the same bits, and acst_rotate_state then acst_update, its documented
+// equivalent, which must go on where it goes on, to the same bits, and fail where it fails),
+// acst_diagnostics, acst_wave_speed.
+// Checked after every call:
 //   - on any status but ACST_OK the stress and state passed in are unchanged (always);
 //   - ACST_OK means every output is finite and physical: stress, state, tangent, diagnostics and
 //     wave speed finite, and for the sand models void ratio > 0 and p >= 0 (with the CMake
@@ -179,6 +181,17 @@ void update_rotated(acst::fuzz::Bytes& in, const acst_model* m, Point& p, bool s
   acst_update_rotated_batch(batch.stress, 6, batch.statev, ACST_NSTATV, &code, nullptr, m, 1, Q, d);
   if (code != s.code || std::memcmp(&batch, &p, sizeof batch) != 0)
     finding("acst_update_rotated_batch", "differs from acst_update_rotated", s);
+  // Its documented equivalent, acst_rotate_state then acst_update, with which a host retries after
+  // a step reduction: where the one call goes on (OK, a step reduction) the two give the same status
+  // and, on OK, the same bits; where it fails otherwise the two fail too (with a wrong state and a
+  // wrong strain at once, which of the two each names first may differ).
+  Point two = before;
+  acst_status t = acst_rotate_state(two.stress, two.statev, m, Q);
+  if (t.code == ACST_OK) t = acst_update(two.stress, two.statev, nullptr, nullptr, m, d);
+  const auto goes_on = [](int code) { return code == ACST_OK || code == ACST_STEP_REDUCTION; };
+  const bool same = goes_on(s.code) || goes_on(t.code) ? t.code == s.code : true;
+  if (!same || (s.code == ACST_OK && std::memcmp(&two, &p, sizeof two) != 0))
+    finding("acst_update_rotated", "differs from acst_rotate_state then acst_update", s);
   if (s.code != ACST_OK) return check_unchanged("acst_update_rotated", s, before, p);
   check_ok_point("acst_update_rotated", s, p, acst_state_size(m), sand);
   if (ok_rule && !all_finite(tangent, 36)) finding("acst_update_rotated", "OK with a non-finite tangent", s);

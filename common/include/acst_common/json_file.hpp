@@ -17,4 +17,8 @@ namespace acst::common::fields {
 // with its path.
 nlohmann::json read_json_file(const std::string& path, const std::string& what, const std::string& named_at = "");
 
+// The same for a file's text already read (`path` only names it in the messages).
+nlohmann::json parse_json_file_text(const std::string& text, const std::string& path, const std::string& what,
+                                    const std::string& named_at = "");
+
 }  // namespace acst::common::fields

@@ -24,10 +24,19 @@ void require_own_folder(const std::string& dir, const std::function<bool(const s
 // A hidden folder beside `dir`, unique to this process, to build the new result set in.
 std::string staging_folder_for(const std::string& dir);
 
+// Before a long run whose result set is to replace `dir` (publish_folder): refuses with
+// InputError, naming the folder and why, a `dir` whose parent cannot take the staging folder,
+// or, where `dir` holds an earlier set, one whose folders do not let that set be removed (a
+// read-only folder). Tried by making and removing a hidden folder in each, so that it also holds
+// for root and on a read-only file system, where permission bits say nothing.
+void require_replaceable_folder(const std::string& dir);
+
 // Puts the folder `staging` in the place of `dir` in one step, so that `dir` holds the whole
 // earlier result set or the whole new one at every moment (an atomic exchange, renameat2
 // RENAME_EXCHANGE, where the file system has it; else two renames, between which `dir` is
-// briefly absent, never mixed); then removes the earlier set. Throws std::runtime_error.
-void publish_folder(const std::string& staging, const std::string& dir);
+// briefly absent, never mixed); then removes the earlier set. Throws std::runtime_error when the
+// new set could not be put in place. Once it is, a failure to remove the earlier set is no
+// failure: the returned warning says where it was left ("" when it was removed).
+std::string publish_folder(const std::string& staging, const std::string& dir);
 
 }  // namespace acst::common

@@ -31,4 +31,9 @@ LabCurve read_lab_curve(const std::string& path);
 // `text_as_nan` is set.
 LabCurve read_commented_csv(const std::string& path, bool text_as_nan = false);
 
+// The two readers on a file's text already read (`path` names it in the messages): what the
+// readers above do once the file is read, and what tests/fuzz/fuzz_lab_csv feeds.
+LabCurve parse_commented_csv(const std::string& text, const std::string& path, bool text_as_nan = false);
+LabCurve parse_lab_curve(const std::string& text, const std::string& path);
+
 }  // namespace acst::driver

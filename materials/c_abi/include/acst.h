@@ -25,8 +25,8 @@
  * own stress and state arrays. Every function returns an acst_status whose message says what went
  * wrong. Mutable arguments come first.
  * ACST_OK means every output is finite and physical (void ratio in (0, 2.97), H >= 0,
- * p >= p_min, tangent finite; docs/c-abi.md "The OK rule"); any other status leaves the caller's
- * stress and state unchanged.
+ * p >= p_min, every stress component at most 1e100 kPa in size, tangent finite; docs/c-abi.md
+ * "The OK rule"); any other status leaves the caller's stress and state unchanged.
  */
 #ifndef ACST_H
 #define ACST_H
@@ -148,10 +148,13 @@ const char* acst_diagnostic_name(int i);
 acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation);
 
 /* acst_rotate_state and then acst_update in one call, with their numbers: the state turned by
- * rotation, then updated over dstrain (given in the turned frame). On any failure stress and
- * statev are left as they came, unrotated: the host retries from its own state (or turns it with
- * acst_rotate_state and subdivides dstrain). OK vouches for the updated state as acst_update's
- * does; the rotated intermediate is never handed out, so it is not checked on its own. */
+ * rotation, then updated over dstrain (given in the turned frame). It fails wherever the two calls
+ * fail: a turned state that acst_rotate_state refuses and acst_update alone would take (a sand
+ * state with a tensile mean stress, a state variable that is not a number) is
+ * ACST_NONPHYSICAL_STATE here too, so that after ACST_STEP_REDUCTION the retry below can always
+ * start. On any failure stress and statev are left as they came, unrotated: the host retries from
+ * its own state (or turns it with acst_rotate_state and subdivides dstrain). OK vouches for the
+ * updated state as acst_update's does; the rotated intermediate is never handed out. */
 acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
                                 const acst_model* model, const double* rotation, const double* dstrain);
 

@@ -20,6 +20,11 @@ namespace acst::abi {
 
 namespace {
 
+std::string tension_problem(const Sym& model_stress) {
+  const double p = mean_stress(model_stress);
+  return p < 0.0 ? "the mean stress is tensile (p = " + std::to_string(p) + " kPa)" : "";
+}
+
 class SandKind final : public ModelKind {
  public:
   explicit SandKind(Material material) : material_(std::move(material)) {}
@@ -49,13 +54,21 @@ class SandKind final : public ModelKind {
   std::string state_problem(const double* stress, const double* statev) const override {
     if (const std::string p = ModelKind::state_problem(stress, statev); !p.empty()) return p;
     const State s = state_of(stress, statev);
+    if (!stress_within_limit(s.stress.data()))
+      return "a stress component is beyond 1e100 kPa in size (acst::stress_limit), where the model's arithmetic "
+             "overflows";
     if (!void_ratio_admissible(s.void_ratio))
       return "void ratio " + std::to_string(s.void_ratio) + " outside (0, " + std::to_string(void_ratio_limit) + ")";
     if (s.H < 0.0) return "H (state variable 8) is negative";
-    // Sand carries no tension. (An update takes such a state: the integrator's p_min floor deals
-    // with it; the functions that only read a state refuse it.)
-    if (mean_stress(s.stress) < 0.0) return "the mean stress is tensile (p = " + std::to_string(mean_stress(s.stress)) + " kPa)";
-    return "";
+    return tension_problem(s.stress);
+  }
+
+  // Sand carries no tension. acst_update takes such a state (the integrator's p_min floor deals
+  // with it); the functions that only read a state refuse it, and so acst_rotate_state does, and
+  // acst_update_rotated with it.
+  std::string turned_state_problem(const double* stress, const double* statev) const override {
+    if (std::string p = ModelKind::turned_state_problem(stress, statev); !p.empty()) return p;
+    return tension_problem(stress_to_model(stress));
   }
 
   // One quantity nonlocally, the void ratio: its offset moves the state parameter (docs/model.md
@@ -138,17 +151,19 @@ class SandKind final : public ModelKind {
  private:
   // Into lane l, the state of rotated_copy(stress, statev, r) as update_point reads it and the
   // increment, for a turn about axis 3 (a plane-strain host's); false, and the lane not written,
-  // where update_point would refuse the state before converting (a state variable not finite)
-  // and for other turns, which give shear out of the plane that the lanes leave anyway.
+  // where update_rotated would refuse the state before converting (a state variable not finite,
+  // the substep hint too, or a tensile turned stress) and for other turns, which give shear out
+  // of the plane that the lanes leave anyway.
   static bool put_turned(UpdateLanes& lanes, int l, const double* stress, const double* statev, const double* r,
                          const double* dstrain, const double* nonlocal) {
     if (!turns_about_axis3(r)) return false;
     double a[6], s[6], f[6];
     for (int i = 0; i < 6; ++i) a[i] = stress_entry_to_model(stress, i);
     rotate_about_axis3(a, r[0], r[1], r[3], r[4], s);
+    if (mean_stress(s) < 0.0) return false;  // refused by update_rotated (tension_problem)
     rotate_about_axis3(statev + slot_fabric, r[0], r[1], r[3], r[4], f);
     bool finite = std::isfinite(statev[slot_void_ratio]) && std::isfinite(statev[slot_H]) &&
-                  std::isfinite(statev[slot_floor_resets]);
+                  std::isfinite(statev[slot_floor_resets]) && std::isfinite(statev[slot_substep_hint]);
     for (int i = 0; i < 6; ++i) finite = finite && std::isfinite(f[i]);
     if (!finite) return false;
     for (int i = 0; i < 6; ++i) {

@@ -56,6 +56,12 @@ class ModelKind {
   // (the entry check of acst_diagnostics, acst_wave_speed, acst_rotate_state). By default:
   // a finite stress and finite state variables.
   virtual std::string state_problem(const double* stress, const double* statev) const;
+  // Of what state_problem refuses, what an update takes: a state variable that is not a number
+  // (the sand's substep hint, which an update reads as no hint) and, for sand, a tensile mean
+  // stress (the integrator's pressure floor deals with it). update_rotated refuses it in the
+  // turned state, so that it answers as its documented equivalent, acst_rotate_state and then
+  // acst_update, does. Cheap: it runs on every point of an MPM step.
+  virtual std::string turned_state_problem(const double* stress, const double* statev) const;
   virtual ElasticModuli moduli(const double* stress, const double* statev) const = 0;
   virtual void diagnostics(double* out, const double* stress, const double* statev) const = 0;
   // Whether diagnostic i means something for this kind (the others are NaN by contract).

@@ -51,9 +51,12 @@ acst::Material material_from_props(const double* props, int nprops) {
   if (nprops > 24) p.peak_pressure_exponent = props[24];  // checked with the others ([-1, 1])
   acst::integration::Options o;
   if (nprops > 18) {
-    const int code = static_cast<int>(props[18]);
-    if (code < 0 || code > 3 || props[18] != code) throw acst::InputError("PROPS(19) must be 0, 1, 2 or 3");
-    o.scheme = static_cast<acst::integration::Scheme>(code);
+    // Compared as a double before it becomes an int: converting NaN, an infinity or 1e300 to an
+    // int is undefined behaviour.
+    const double code = props[18];
+    if (!(code == 0.0 || code == 1.0 || code == 2.0 || code == 3.0))
+      throw acst::InputError("PROPS(19) must be 0, 1, 2 or 3");
+    o.scheme = static_cast<acst::integration::Scheme>(static_cast<int>(code));
   }
   if (nprops > 19) o.stol = props[19];
   if (nprops > 20) {

@@ -24,6 +24,18 @@ ACST_INLINE double normalised_pressure(double p, double p_floor) { return max_of
 inline constexpr double void_ratio_limit = 2.97;
 ACST_INLINE bool void_ratio_admissible(double e) { return e > 0.0 && e < void_ratio_limit; }
 
+// The stresses a state may have: every component at most 1e100 kPa in size. The model cubes
+// stress components (J3 of the Lode angle), which overflow from about 5.6e102, and beyond that
+// an update failed at every increment size, even zero (an isotropic 1e308 kPa came back as a step
+// reduction, which a host retries for ever); 1e100 kPa is beyond any pressure in sand by 90
+// orders of magnitude. One check for every entry point, as for the void ratio; a NaN fails it.
+inline constexpr double stress_limit = 1e100;
+ACST_INLINE bool stress_within_limit(const double* stress) {
+  bool within = true;
+  for (int i = 0; i < 6; ++i) within = within & (stress[i] <= stress_limit) & (stress[i] >= -stress_limit);
+  return within;
+}
+
 enum class Variant { anisotropic, isotropic };
 
 struct Parameters {

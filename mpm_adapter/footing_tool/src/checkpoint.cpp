@@ -45,7 +45,7 @@ struct Reader {
   std::string file;
   std::size_t at = sizeof magic;
   [[noreturn]] void refuse(const std::string& why) const {
-    throw common::InputError("--resume: the checkpoint '" + file + "' " + why);
+    throw CheckpointError("--resume: the checkpoint '" + file + "' " + why);
   }
   void need(std::size_t n) {
     if (n > end - at) refuse("is truncated");
@@ -126,10 +126,14 @@ bool all_finite(const std::vector<double>& v) {
   return true;
 }
 
+// A step count a run can go on from: a forged one at the type's largest value would overflow at
+// the next step.
+bool step_in_range(long long step) { return step >= 0 && step <= max_checkpoint_steps; }
+
 bool track_finite(const TrackRecord& t) {
   bool finite = std::isfinite(t.time) && std::isfinite(t.S_over_B) && std::isfinite(t.x) && std::isfinite(t.y) &&
                 std::isfinite(t.rotation_rad) && std::isfinite(t.void_ratio) && std::isfinite(t.H) &&
-                std::isfinite(t.fabric_norm) && std::isfinite(t.A) && t.step >= 0;
+                std::isfinite(t.fabric_norm) && std::isfinite(t.A) && step_in_range(t.step);
   for (const double* v : {t.strain, t.strain + 1, t.strain + 2}) finite = finite && std::isfinite(*v);
   for (int i = 0; i < 6; ++i) finite = finite && std::isfinite(t.stress[i]) && std::isfinite(t.fabric[i]);
   return finite;
@@ -139,14 +143,14 @@ bool record_finite(const LoadRecord& r) {
   for (const double x : {r.time, r.settlement, r.S_over_B, r.V_kN_per_m, r.H_kN_per_m, r.M_kNm_per_m, r.q_kPa,
                          r.penetration_m, r.kinetic_J_per_m, r.footing_work_J_per_m})
     if (!std::isfinite(x)) return false;
-  return r.step >= 0;
+  return step_in_range(r.step);
 }
 
 // What the checksum cannot promise for a file that was written so (a bug, or made by hand): every
 // number a run goes on with is finite and in its range, every index points into its array.
 void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, const Particles& P, const Clock& clock,
                     const Footing::Motion& motion, const std::vector<double>& friction, const RunState& st) {
-  if (clock.step < 0 || !std::isfinite(clock.time) || clock.time < 0 || !std::isfinite(clock.dt) || clock.dt < 0)
+  if (!step_in_range(clock.step) || !std::isfinite(clock.time) || clock.time < 0 || !std::isfinite(clock.dt) || clock.dt < 0)
     r.refuse("holds an impossible clock (step " + std::to_string(clock.step) + ", time " + std::to_string(clock.time) + ")");
   if (!std::isfinite(motion.dx) || !std::isfinite(motion.dy) || !std::isfinite(motion.work))
     r.refuse("holds a non-finite footing motion");
@@ -171,7 +175,7 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
     for (const LoadRecord& rec : *records)
       if (!record_finite(rec)) r.refuse("holds an impossible load record");
   if (!std::isfinite(st.sum_V) || !std::isfinite(st.sum_H) || !std::isfinite(st.sum_M) ||
-      !std::isfinite(st.max_penetration) || st.period_steps < 0)
+      !std::isfinite(st.max_penetration) || !step_in_range(st.period_steps))
     r.refuse("holds an impossible running sum");
   if (st.vtk_frames < 0 || static_cast<std::size_t>(st.vtk_frames) != st.vtk_times.size() || !all_finite(st.vtk_times))
     r.refuse("holds an impossible frame count");
@@ -219,7 +223,7 @@ void read_checkpoint(const std::string& path, const Scene& scene, Simulation& si
     // inputs; its own cap only stops a file that cannot be one (the reader checks the rest).
     data = common::read_input_file(path, max_checkpoint_bytes);
   } catch (const common::InputError& e) {
-    throw common::InputError(std::string("--resume: the checkpoint ") + e.what());
+    throw CheckpointError(std::string("--resume: the checkpoint ") + e.what());
   }
   Reader r{data, 0, path};
   if (data.size() < sizeof magic || std::memcmp(data.data(), magic, sizeof magic - 1) != 0)

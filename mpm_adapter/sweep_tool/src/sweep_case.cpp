@@ -11,6 +11,7 @@
 #include "acst_common/json_fields.hpp"
 #include "acst_common/json_file.hpp"
 #include "acst_common/result_folder.hpp"
+#include "acst_footing_tool/checkpoint.hpp"
 #include "acst_footing_tool/first_peak.hpp"
 #include "acst_footing_tool/runner.hpp"
 
@@ -67,11 +68,63 @@ json q_at(const LoadCurve& c, double x) {
   return nullptr;
 }
 
+constexpr const char* load_at_prefix = "q_at_S_over_B_";
+
 std::string load_at_column(double s) {
-  return "q_at_S_over_B_" + common::fields::shown(s) + "_kPa";
+  return load_at_prefix + common::fields::shown(s) + "_kPa";
+}
+
+// The columns of case_row and run_case besides the variables, and the prefixes of those whose
+// names are made: the side measures of acst_mpm's summary (sheared_area_left_at_peak_m2, ...)
+// and q at the gathered settlements. A column added to the row is added here.
+constexpr const char* table_columns[] = {
+    "case", "group", "status", "material", "relative_density_pct", "void_ratio", "bedding_angle_deg",
+    "inclination_deg", "B_m", "soil_width_m", "half_domain", "cell_m", "particles_per_cell", "q_ult_kPa",
+    "S_ult_over_B", "H_at_peak_kN_per_m", "M_at_peak_kNm_per_m", "q_first_peak_kPa", "S_first_peak_over_B",
+    "final_S_over_B", "peak_reached", "quasi_static", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads",
+    "load_file", "resumed", "message"};
+constexpr const char* table_column_prefixes[] = {load_at_prefix, "sheared_area_", "heave_"};
+
+// The row's columns from acst_mpm's summary.json of the case: the side measures
+// ("sides": {"at_peak": {"heave_left_m": ...}, ...} as heave_left_at_peak_m, ...) and a few
+// figures of the run. A kept case's summary may have been edited or damaged: one of another
+// shape is refused naming the file and the field (it ended in the library's own error, such as
+// basic_string::substr, naming nothing).
+void add_summary_columns(ordered_json& row, const std::string& summary_file) {
+  namespace f = common::fields;
+  const json summary = f::read_json_file(summary_file, "the run's summary");
+  try {
+    f::object(summary, "");
+    if (summary.contains("sides") && !summary["sides"].is_null()) {  // null: a scene without a footing
+      const json& sides = f::object(summary["sides"], "/sides");
+      for (const char* when : {"at_peak", "at_end"}) {
+        if (!sides.contains(when)) continue;
+        const std::string at = std::string("/sides/") + when;
+        for (const auto& item : f::object(sides[when], at).items()) {
+          const std::string& key = item.key();
+          const std::size_t unit = key.rfind('_');  // "_m2", "_m"
+          if (unit == std::string::npos || unit == 0)
+            f::fail(at + "/" + key, "expected a measure named with its unit (heave_left_m, sheared_area_left_m2)");
+          row[key.substr(0, unit) + "_" + when + key.substr(unit)] = item.value();
+        }
+      }
+    }
+  } catch (const common::InputError& e) {
+    throw common::InputError("the run's summary '" + summary_file + "': " + e.what());
+  }
+  for (const char* k : {"quasi_static", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads"})
+    if (summary.contains(k)) row[k] = summary[k];
 }
 
 }  // namespace
+
+bool is_table_column(const std::string& name) {
+  for (const char* c : table_columns)
+    if (name == c) return true;
+  for (const char* prefix : table_column_prefixes)
+    if (name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
 
 std::string case_folder(const std::string& sweep_dir, const std::string& name) {
   return (fs::path(sweep_dir) / sweep_cases_folder / name).string();
@@ -145,47 +198,70 @@ ordered_json case_row(const SweepCase& c, const std::string& dir, CaseStatus sta
     row["peak_reached"] = curve.V.back() < 0.98 * *peak;
   }
   const std::string summary_file = (fs::path(dir) / "summary.json").string();
-  if (status == CaseStatus::done && fs::exists(summary_file)) {
-    const json summary = common::fields::read_json_file(summary_file, "the run's summary");
-    for (const char* when : {"at_peak", "at_end"})
-      if (summary.contains("sides") && summary["sides"].contains(when))
-        for (const auto& item : summary["sides"][when].items()) {
-          const std::string key = item.key(), unit = key.substr(key.rfind('_'));  // "_m2", "_m"
-          row[key.substr(0, key.size() - unit.size()) + "_" + when + unit] = item.value();
-        }
-    for (const char* k : {"quasi_static", "max_kinetic_ratio", "steps", "particles", "wall_s", "threads"})
-      if (summary.contains(k)) row[k] = summary[k];
-  }
+  if (status == CaseStatus::done && fs::exists(summary_file)) add_summary_columns(row, summary_file);
   row["load_file"] = fs::exists(load_file) ? fs::path(load_file).filename().string() : "";
   row["message"] = message;
   return row;
 }
 
+namespace {
+
+// Whether the partial folder holds an interrupted run of this very case to resume: its checkpoint
+// and the fingerprint beside it, equal to the case's. A fingerprint file that cannot be read is
+// no such run; `note` then says why the folder is not resumed.
+bool resumable(const std::string& checkpoint, const std::string& fingerprint_path, const json& fingerprint,
+               std::string& note) {
+  if (!fs::exists(checkpoint) || !fs::exists(fingerprint_path)) return false;
+  try {
+    return common::fields::read_json_file(fingerprint_path, "the interrupted run's fingerprint") == fingerprint;
+  } catch (const common::InputError& e) {
+    note = std::string(e.what()) + ": its checkpoint was discarded and the case ran afresh";
+    return false;
+  }
+}
+
+// A fresh partial folder with the case's fingerprint beside it (acst_mpm starts a new run only
+// in a folder of its own files, so the fingerprint is not inside).
+void start_partial(const std::string& partial, const std::string& fingerprint_path, const json& fingerprint) {
+  fs::remove_all(partial);
+  fs::create_directories(partial);
+  common::write_file_atomically(fingerprint_path, fingerprint.dump() + "\n");
+}
+
+}  // namespace
+
 ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const std::vector<double>& load_at_S_over_B) {
   const std::string partial = case_partial_folder(options.sweep_dir, c.name);
   const std::string checkpoint = (fs::path(partial) / "checkpoint.bin").string();
+  const std::string fingerprint_path = partial + ".json";
   const json fingerprint = case_fingerprint(c);
   RunOptions run;
   run.output_dir = partial;
   run.quiet = true;
   run.plot = options.plot;
-  // An interrupted run of this very case goes on; anything else there is an earlier case's. The
-  // fingerprint lies beside the folder: acst_mpm starts a new run only in a folder of its own files.
-  const std::string fingerprint_path = partial + ".json";
-  if (fs::exists(checkpoint) && fs::exists(fingerprint_path) &&
-      common::fields::read_json_file(fingerprint_path, "the case's fingerprint") == fingerprint)
+  // An interrupted run of this very case goes on; anything else there is an earlier case's.
+  std::string note;
+  if (resumable(checkpoint, fingerprint_path, fingerprint, note)) {
     run.resume_from = checkpoint;
-  else
-    fs::remove_all(partial);
-  fs::create_directories(partial);
-  common::write_file_atomically(fingerprint_path, fingerprint.dump() + "\n");
+    fs::create_directories(partial);
+  } else {
+    start_partial(partial, fingerprint_path, fingerprint);
+  }
 
   Scene scene = c.scene;
   if (options.threads > 0) scene.solver.threads = options.threads;
   CaseStatus status = CaseStatus::done;
   std::string message;
   try {
-    run_scene(scene, run);
+    try {
+      run_scene(scene, run);
+    } catch (const CheckpointError& e) {
+      // Refused before the run wrote anything: the checkpoint is only a shortcut.
+      note = std::string(e.what()) + ": discarded, the case ran afresh";
+      run.resume_from.clear();
+      start_partial(partial, fingerprint_path, fingerprint);
+      run_scene(scene, run);
+    }
   } catch (const std::exception& e) {
     status = CaseStatus::failed;
     message = e.what();
@@ -194,20 +270,17 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
   const std::string published = case_folder(options.sweep_dir, c.name);
   for (std::size_t at = message.find(partial); at != std::string::npos; at = message.find(partial, at + published.size()))
     message.replace(at, partial.size(), published);
+  if (!note.empty()) message += (message.empty() ? "" : "; ") + note;
   ordered_json row = case_row(c, partial, status, message, load_at_S_over_B);
   row["resumed"] = !run.resume_from.empty();
   fs::remove(checkpoint);  // a finished case is never resumed; its checkpoint is the largest file
   const ordered_json record = {{"fingerprint", fingerprint}, {"row", row}};
   common::write_file_atomically((fs::path(partial) / sweep_case_record).string(), record.dump(2) + "\n");
-  common::publish_folder(partial, published);
+  // Where an earlier folder of the case (a failed run, retried) could not be removed after the
+  // exchange, it stays as the hidden partial folder, which the case's next run starts afresh.
+  (void)common::publish_folder(partial, published);
   fs::remove(fingerprint_path);
   return row;
-}
-
-json read_case_record(const std::string& sweep_dir, const std::string& name) {
-  const std::string path = (fs::path(case_folder(sweep_dir, name)) / sweep_case_record).string();
-  if (!fs::exists(path)) return nullptr;
-  return common::fields::read_json_file(path, "the case record");
 }
 
 }  // namespace acst::mpm

@@ -9,6 +9,7 @@
 #include "acst_common/json_file.hpp"
 #include "acst_common/plain_stem.hpp"
 #include "acst_sweep/sweep.hpp"
+#include "acst_sweep/sweep_case.hpp"
 
 namespace acst::mpm {
 
@@ -17,8 +18,16 @@ using nlohmann::json;
 
 namespace {
 
-// A description that expands to more cases than this is a mistake (a product of long lists).
-constexpr std::size_t max_cases = 10000;
+// A description that expands to more cases than max_sweep_cases is a mistake (a product of
+// long lists, or a generated list of entries): refused before a scene is made, not after
+// building millions of them.
+void require_case_count_within_cap(const json& cases) {
+  const double total = sweep_case_count(cases);
+  if (total > max_sweep_cases)
+    f::fail("/cases", "its " + std::to_string(cases.size()) + " entries make " + f::shown(total) +
+                          " cases (each entry one, or its 'vary' lists' product); at most " + f::shown(max_sweep_cases) +
+                          " are allowed");
+}
 
 // A variable sets one pointer ("path") or several at once ("paths", each value an array with one
 // entry per pointer: a width that moves the footing's centre with it).
@@ -57,6 +66,10 @@ Variable read_variable(const json& j, const std::string& p) {
   v.name = f::string(j["name"], p + "/name");
   if (!common::is_plain_stem(v.name) || v.name.find('.') != std::string::npos)
     f::fail(p + "/name", "'" + v.name + "' is not a variable name (letters, digits, '_' and '-')");
+  // The variables are columns of the table beside its own (docs/sweeps.md, "The table").
+  if (is_table_column(v.name))
+    f::fail(p + "/name", "'" + v.name + "' is a column of the sweep's table (case, group, status, q_ult_kPa, ...; "
+                         "docs/sweeps.md, \"The table\"): name the variable otherwise");
   const bool several = f::one_of(j, {"path", "paths"}, p) == "paths";
   if (several) {
     if (!j["paths"].is_array() || j["paths"].empty()) f::fail(p + "/paths", "expected a non-empty array of JSON pointers");
@@ -138,6 +151,18 @@ class BaseScenes {
 
 }  // namespace
 
+double sweep_case_count(const json& cases) {
+  double total = 0.0;
+  for (const json& c : cases) {
+    double n = 1.0;
+    if (c.is_object() && c.contains("vary") && c["vary"].is_array())
+      for (const json& v : c["vary"])
+        if (v.is_object() && v.contains("values") && v["values"].is_array()) n *= static_cast<double>(v["values"].size());
+    total += n;
+  }
+  return total;
+}
+
 void set_at_pointer(json& scene, const std::string& pointer, const json& value, const std::string& where) {
   json::json_pointer ptr;
   try {
@@ -203,6 +228,7 @@ SweepSpec sweep_from_document(const json& j, const std::string& file, const std:
     for (auto& item : read_set(f::parse(extra_set, "--set", "the value of --set"), "--set")) common_set.push_back(std::move(item));
   if (!j.contains("cases") || !j["cases"].is_array() || j["cases"].empty())
     f::fail("/cases", "expected a non-empty array of cases");
+  require_case_count_within_cap(j["cases"]);
 
   BaseScenes bases(file.empty() ? "" : std::filesystem::path(file).parent_path().string());
   std::set<std::string> names;
@@ -236,11 +262,8 @@ SweepSpec sweep_from_document(const json& j, const std::string& file, const std:
           if (vars[m].name == vars.back().name) f::fail(p + "/vary/" + std::to_string(k) + "/name", "'" + vars.back().name + "' is varied twice");
       }
     }
-    std::size_t count = 1;
-    for (const Variable& v : vars) {
-      count *= v.values.size();
-      if (count + s.cases.size() > max_cases) f::fail(p + "/vary", "more than " + std::to_string(max_cases) + " cases");
-    }
+    std::size_t count = 1;  // within max_sweep_cases: counted before
+    for (const Variable& v : vars) count *= v.values.size();
     // Every combination of the variables' values; the last variable changes fastest.
     for (std::size_t n = 0; n < count; ++n) {
       json scene = base;

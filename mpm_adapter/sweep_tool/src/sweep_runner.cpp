@@ -3,17 +3,20 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 
 #include "acst_common/cli.hpp"
 #include "acst_common/duration.hpp"
 #include "acst_common/files.hpp"
+#include "acst_common/folder_lock.hpp"
 #include "acst_common/input_error.hpp"
 #include "acst_common/one_line.hpp"
 #include "acst_common/progress.hpp"
 #include "acst_common/result_folder.hpp"
 #include "acst_footing_tool/build_simulation.hpp"
 #include "acst_footing_tool/scene_size.hpp"
+#include "acst_sweep/case_record.hpp"
 #include "acst_sweep/sweep_case.hpp"
 #include "acst_sweep/sweep_table.hpp"
 
@@ -28,19 +31,27 @@ void InTurn::distribute(const std::vector<std::size_t>& pending, const RunOne& r
 
 namespace {
 
-// Entries of SWEEP/cases that a sweep writes: case folders (plain names) and the hidden partial
-// folders, fingerprints and publishing leftovers.
+// Entries of SWEEP/cases that a sweep writes: case folders (plain names, each with its record,
+// which is written before the folder is published) and the hidden partial folders, fingerprints
+// and publishing leftovers. Anything else is the user's: a rerun would replace a folder named
+// like a case, so it is refused untouched.
 void require_own_cases_folder(const std::string& dir) {
   const fs::path cases = fs::path(dir) / sweep_cases_folder;
   if (!fs::exists(cases)) return;
   if (!fs::is_directory(cases)) throw common::InputError("'" + cases.string() + "' is not a folder");
+  const auto refuse = [&](const std::string& name, const std::string& what) {
+    throw common::InputError("the sweep folder '" + cases.string() + "' holds '" + name + "', " + what +
+                             ", which acst_sweep does not write: move it away, or choose an empty folder or one of "
+                             "an earlier sweep");
+  };
   for (const fs::directory_entry& e : fs::directory_iterator(cases)) {
     const std::string name = e.path().filename().string();
     const bool hidden_own = name.size() > 1 && name[0] == '.' &&
                             (name.find(".partial") != std::string::npos || common::is_temporary_name(name));
-    if (!hidden_own && !e.is_directory())
-      throw common::InputError("the sweep folder '" + cases.string() + "' holds '" + name +
-                               "', which acst_sweep does not write: choose an empty folder or one of an earlier sweep");
+    if (hidden_own) continue;
+    if (e.is_symlink() || !e.is_directory()) refuse(name, e.is_symlink() ? "a link" : "a file");
+    if (!fs::is_regular_file(e.path() / sweep_case_record) || fs::is_symlink(e.path() / sweep_case_record))
+      refuse(name, std::string("a folder without a case record (") + sweep_case_record + ")");
   }
 }
 
@@ -93,24 +104,23 @@ Plan plan_sweep(const SweepSpec& sweep, const SweepRunOptions& opt) {
   Plan plan;
   for (std::size_t i = 0; i < sweep.cases.size(); ++i) {
     const SweepCase& c = sweep.cases[i];
-    const json record = read_case_record(opt.output_dir, c.name);
-    if (record.is_null()) {
+    const std::optional<CaseRecord> record = read_case_record(opt.output_dir, c.name);
+    if (!record) {
       plan.rows.push_back(case_row(c, "", CaseStatus::pending, "", sweep.load_at_S_over_B));
       plan.pending.push_back(i);
       continue;
     }
     const json fingerprint = case_fingerprint(c);
-    if (!record.contains("fingerprint") || !record.contains("row") || record["fingerprint"] != fingerprint)
+    if (record->fingerprint != fingerprint)
       throw common::InputError("case '" + c.name + "' (" + c.origin + "): '" + case_folder(opt.output_dir, c.name) +
                                "' holds a run of another scene or material" +
-                               first_difference(record.value("fingerprint", json()), fingerprint) +
+                               first_difference(record->fingerprint, fingerprint) +
                                "; remove that folder to run the case again");
     // The row is read again from the case's folder: a newer acst_sweep gathers every case alike.
-    const ordered_json& kept = record["row"];
-    plan.rows.push_back(case_row(c, case_folder(opt.output_dir, c.name), status_of(kept),
-                                 kept.value("message", std::string()), sweep.load_at_S_over_B));
-    plan.rows.back()["resumed"] = kept.value("resumed", false);
-    if (opt.retry_failed && status_of(kept) != CaseStatus::done) {
+    plan.rows.push_back(
+        case_row(c, case_folder(opt.output_dir, c.name), record->status, record->message, sweep.load_at_S_over_B));
+    plan.rows.back()["resumed"] = record->resumed;
+    if (opt.retry_failed && record->status != CaseStatus::done) {
       plan.pending.push_back(i);
     } else {
       ++plan.skipped;
@@ -132,7 +142,8 @@ std::string finished_line(const SweepCase& c, const ordered_json& row) {
     std::snprintf(text, sizeof text, "%s: done in %s, q_ult %.1f kPa at S/B %.4f%s", c.name.c_str(),
                   common::duration_text(row.value("wall_s", 0.0)).c_str(), row["q_ult_kPa"].get<double>(),
                   row["S_ult_over_B"].get<double>(), row.value("resumed", false) ? " (resumed from its checkpoint)" : "");
-    return text;
+    const std::string note = row.value("message", std::string());  // a done case's: its checkpoint discarded
+    return note.empty() ? std::string(text) : std::string(text) + " (" + common::one_line(note) + ")";
   }
   return c.name + ": " + name_of(status_of(row)) + ": " + common::one_line(row.value("message", std::string()));
 }
@@ -143,9 +154,12 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
               std::ostream& err) {
   Plan plan;
   std::string problem;
+  // Held by the coordinator until the sweep ends: a second sweep into the folder is refused.
+  std::optional<common::FolderLock> lock;
   if (where.coordinator()) {
     try {
       common::require_own_folder(opt.output_dir, is_sweep_output_name);
+      lock.emplace(opt.output_dir, sweep_lock_file, "acst_sweep");
       require_own_cases_folder(opt.output_dir);
       plan = plan_sweep(sweep, opt);
       fs::create_directories(fs::path(opt.output_dir) / sweep_cases_folder);
@@ -154,6 +168,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
       gather(sweep, plan.rows, opt);
     } catch (const std::exception& e) {
       problem = e.what();
+      if (lock && plan.rows.empty()) lock->undo();  // refused before writing: nothing left behind
     }
   }
   if (!where.all(problem.empty())) {

@@ -73,7 +73,7 @@ std::string markdown_table(const std::vector<ordered_json>& rows) {
 
 bool is_sweep_output_name(const std::string& name) {
   static const std::set<std::string> own{sweep_cases_folder, "figures",    "table.csv", "table.md",
-                                         "table.json",       "sweep.json", "report.md"};
+                                         "table.json",       "sweep.json", "report.md", sweep_lock_file};
   return own.count(name) > 0 || common::is_temporary_name(name);
 }
 
@@ -143,7 +143,10 @@ std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::
       const fs::path to = figures / "cases" / (c.name + "_" + name), temporary = common::temporary_name(to.string());
       fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
       if (!ec) fs::rename(temporary, to, ec);
-      if (ec) warnings.push_back("cannot copy " + from.string() + ": " + ec.message());
+      if (ec) {
+        warnings.push_back("cannot copy " + from.string() + ": " + ec.message());
+        fs::remove(temporary, ec);  // a copy cut short (a full disk) never takes the earlier one's place
+      }
     }
   return warnings;
 }

@@ -155,6 +155,16 @@ TEST(UmatProtocol, UnrecoverableCallsReturnTheSmallFactorAndAFiniteTangent) {
          p.ntens = 4;
          p.statev[6] = 3.5;
        }, plastic},
+      // PROPS(19) was converted to an int before it was checked: undefined behaviour for these,
+      // which the sanitizer build stops at (issue 57).
+      {"PROPS(19) NaN", [](Point& p) { p.props.push_back(nan); }, plastic},
+      {"PROPS(19) infinity", [](Point& p) { p.props.push_back(std::numeric_limits<double>::infinity()); }, plastic},
+      {"PROPS(19) 1e300", [](Point& p) { p.props.push_back(1e300); }, plastic},
+      {"PROPS(19) -1e300", [](Point& p) { p.props.push_back(-1e300); }, plastic},
+      {"PROPS(19) 2.5", [](Point& p) { p.props.push_back(2.5); }, plastic},
+      // Beyond the model's arithmetic (acst::stress_limit): a step reduction here failed at
+      // every increment size, so the host cut back for ever.
+      {"an isotropic stress of -1e308 kPa", [](Point& p) { std::fill(p.stress, p.stress + 3, -1e308); }, plastic},
   };
   for (const Case& c : cases)
     for (double entry : {calculix_entry, abaqus_entry}) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "acst_common/files.hpp"
@@ -177,6 +178,24 @@ TEST(MpmCheckpoint, RefusesImpossibleValuesUnderAGoodChecksum) {
   expect_refused(file, scene, "peak snapshot of the wrong size");
   written([](Simulation&, RunState& st) { st.history.push_back(LoadRecord{-1}); });
   expect_refused(file, scene, "impossible load record");
+  // The largest step counts (issue 57): the next step would overflow a signed integer. Every
+  // count a run goes on from is held to max_checkpoint_steps; the bound itself is taken.
+  const long long largest = std::numeric_limits<long long>::max();
+  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{largest, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
+  expect_refused(file, scene, "impossible clock (step 9223372036854775807");
+  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{max_checkpoint_steps + 1, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
+  expect_refused(file, scene, "impossible clock");
+  written([&](Simulation&, RunState& st) { st.period_steps = largest; });
+  expect_refused(file, scene, "impossible running sum");
+  written([&](Simulation&, RunState& st) { st.history.push_back(LoadRecord{largest}); });
+  expect_refused(file, scene, "impossible load record");
+  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{max_checkpoint_steps, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
+  {
+    Simulation sim = build_simulation(scene);
+    RunState st;
+    read_checkpoint(file, scene, sim, st);
+    EXPECT_EQ(sim.step_count(), max_checkpoint_steps);
+  }
   std::remove(file.c_str());
 }
 

@@ -34,6 +34,12 @@ struct SweepSpec {
 // path, and for a scene error also the case and the scene's own path. `extra_set`: a JSON object
 // of pointers and values (acst_sweep --set) applied to every case after the description's "set".
 SweepSpec parse_sweep(const std::string& json_text, const std::string& file, const std::string& extra_set = "");
+
+// The cases a description's /cases array makes (each entry one, or its 'vary' lists' product),
+// counted in double before any is made, so that no product can overflow; entries of the wrong
+// shape count one each. The reader refuses more than max_sweep_cases at once.
+double sweep_case_count(const nlohmann::json& cases);
+inline constexpr double max_sweep_cases = 10000;
 SweepSpec read_sweep(const std::string& path, const std::string& extra_set = "");
 
 // `scene` with `value` put at the JSON pointer `pointer`, which must name a member of an object

@@ -12,6 +12,8 @@ namespace acst::mpm {
 
 inline constexpr const char* sweep_cases_folder = "cases";
 inline constexpr const char* sweep_case_record = "sweep_case.json";
+// In the sweep's folder, locked by the running acst_sweep (common::FolderLock); holds its PID.
+inline constexpr const char* sweep_lock_file = ".acst_sweep.lock";
 
 std::string case_folder(const std::string& sweep_dir, const std::string& name);
 std::string case_partial_folder(const std::string& sweep_dir, const std::string& name);
@@ -28,14 +30,16 @@ struct CaseRunOptions {
 
 // Runs the case (from its checkpoint when an interrupted run of the same fingerprint left one),
 // publishes its folder and returns its row; a run that fails is published too, with status
-// "failed" and the message in its row. Throws std::runtime_error only when the folder cannot be
-// written.
+// "failed" and the message in its row. A checkpoint is only a shortcut: one that cannot be
+// resumed (damaged, or its fingerprint file is) is discarded and the case runs afresh, its row's
+// message saying so. Throws std::runtime_error only when the folder cannot be written.
 nlohmann::ordered_json run_case(const SweepCase& c, const CaseRunOptions& options,
                                 const std::vector<double>& load_at_S_over_B);
 
-// A published case's record: {"fingerprint": ..., "row": ...}; a null json when there is none.
-// Throws std::runtime_error naming the file when it exists but cannot be read.
-nlohmann::json read_case_record(const std::string& sweep_dir, const std::string& name);
+// Whether `name` is (or may be, as q_at_S_over_B_X_kPa) a column of the table that case_row
+// writes besides the case's variables: a variable of that name would overwrite it or be
+// overwritten, so the description's reader refuses it.
+bool is_table_column(const std::string& name);
 
 // Of a run that failed, the last part of its record (in S/B) that the row leaves out.
 inline constexpr double failure_approach_S_over_B = 0.02;
