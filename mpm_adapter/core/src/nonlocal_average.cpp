@@ -33,7 +33,6 @@ NonlocalAverage::NonlocalAverage(double length, NonlocalKernel kernel, std::vect
     : length_(length),
       inverse_length_(1.0 / length),
       skin_(0.25 * length),
-      kernel_(kernel),
       table_(kernel),
       takes_part_(std::move(takes_part)),
       mirror_x_(mirror_x) {

@@ -11,6 +11,7 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/input_error.hpp"
+#include "acst_footing_tool/build_simulation.hpp"
 #include "acst_footing_tool/checkpoint.hpp"
 
 using namespace acst::mpm;

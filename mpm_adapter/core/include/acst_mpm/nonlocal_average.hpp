@@ -76,7 +76,6 @@ class NonlocalAverage {
   double weight(double dx, double dy) const { return table_(std::sqrt(dx * dx + dy * dy) * inverse_length_); }
 
   double length_ = 0.0, inverse_length_ = 0.0, skin_ = 0.0;
-  NonlocalKernel kernel_ = NonlocalKernel::gauss;
   KernelTable table_;
   std::vector<double> volume_;  // the particles' current volumes, of the averaging at hand
   std::vector<int> takes_part_;
