@@ -114,16 +114,23 @@ def write_table_and_figures(out, rows):
     if os.path.exists(table):
         with open(table) as f:
             old = [r for r in csv.DictReader(f) if r["case"] not in {x["case"] for x in rows}]
+    # The local model's rows are its cell-size study's (bench/results/footing_convergence/: the same
+    # scenes, speed and CFL, and the same numbers as today's local code), not run again.
+    with open(LOCAL) as f:
+        local = [r for r in csv.DictReader(f) if "ppc" not in r["scene"]]
+    local_rows = [{"case": r["scene"], "cell_m": r["cell"], "internal_length_m": 0.0, "speed_factor": 1.0, "cfl": 0.5,
+                   "q_ult_kPa": r["q_ult_kPa"], "S_ult_over_B": r["S_ult_over_B"], "wall_s": r["wall_s"],
+                   "q_first_peak_kPa": r["q_first_peak_kPa"], "S_first_peak_over_B": r["S_first_peak_over_B"],
+                   "status": "done (bench/results/footing_convergence, to S/B 0.5)"} for r in local]
+    old = [r for r in old if not r["status"].startswith("done (")]
     with open(table, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
         w.writeheader()
-        w.writerows(old + rows)
+        w.writerows(old + rows + local_rows)
     with open(table) as f:
         every = [r for r in csv.DictReader(f) if r["status"] == "done"]
-    # q_ult against the cell: the local model's study (bench/results/footing_convergence/, the same
-    # numbers as today's local code) and the regularised runs at the study's speed and CFL.
-    with open(LOCAL) as f:
-        local = [r for r in csv.DictReader(f) if "ppc" not in r["scene"]]
+    # q_ult against the cell: the local model's study and the regularised runs at the default
+    # internal length, the study's speed and CFL.
     lines = ["set terminal pngcairo size 1300,520 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h.png'))}",
              "set multiplot layout 1,2", "set grid", "set key top left", "set xlabel 'cell size h [m]'",
              "set ylabel 'q_ult [kPa]'", "set xrange [0:0.2]", "set yrange [0:2600]"]
@@ -131,7 +138,7 @@ def write_table_and_figures(out, rows):
     for test in ("V85.6", "H86.7"):
         loc = sorted((float(r["cell"]), float(r["q_ult_kPa"])) for r in local if r["test"] == test)
         reg = sorted((float(r["cell_m"]), float(r["q_ult_kPa"])) for r in every
-                     if r["case"].startswith(test.replace(".", "p")) and r["internal_length_m"] not in ("0", "0.0")
+                     if r["case"].startswith(test.replace(".", "p")) and r["internal_length_m"] == "default"
                      and float(r["speed_factor"]) == 1.0 and float(r["cfl"]) == 0.5)
         data = lambda pts: "\n".join(f"{x} {y}" for x, y in pts) + "\ne"
         lines += [f"set title {gp_quoted(test + ': the largest load against the cell (S/B up to 0.25)')}",

@@ -94,28 +94,23 @@ void particle_arrays(P& particles, F&& f) {
   f(p.tracked);
 }
 
+// Plain values in the order given (a fold over the comma is sequenced left to right).
+template <class IO, class... T>
+void pods(IO& io, T&... values) {
+  (io.pod(values), ...);
+}
+
 template <class IO, class C, class M, class V, class State>
 void run_fields(IO& io, C& clock, M& motion, V& friction, State& st) {
-  io.pod(clock.step);
-  io.pod(clock.time);
-  io.pod(clock.dt);
-  io.pod(motion.dx);
-  io.pod(motion.dy);
-  io.pod(motion.work);
+  pods(io, clock.step, clock.time, clock.dt, motion.dx, motion.dy, motion.work);
   io.flag(motion.unloading);
   io.vec(friction);
   io.vec(st.history);
   io.vec(st.every_step);
-  io.pod(st.sum_V);
-  io.pod(st.sum_H);
-  io.pod(st.sum_M);
-  io.pod(st.max_penetration);
-  io.pod(st.period_steps);
-  io.pod(st.vtk_frames);
+  pods(io, st.sum_V, st.sum_H, st.sum_M, st.max_penetration, st.period_steps, st.vtk_frames);
   io.vec(st.vtk_times);
   io.vec(st.contours_done);
-  io.pod(st.peak.S_over_B);
-  io.pod(st.peak.V_kN_per_m);
+  pods(io, st.peak.S_over_B, st.peak.V_kN_per_m);
   for (auto* v : {&st.peak.x, &st.peak.y, &st.peak.shear_strain, &st.peak.displacement}) io.vec(*v);
   io.vec(st.tracks);
 }
