@@ -147,6 +147,23 @@ def write_table_and_figures(out, rows):
                   f"{kimura[test]} with lines dt 2 lc rgb 'black' title 'Kimura et al. (1985)'",
                   data(loc), data(reg)]
     lines += ["unset multiplot", ""]
+    # Each test's regularised curves at the study's speed and CFL over the centrifuge's.
+    for test in ("V85.6", "H86.7"):
+        runs = sorted((float(r["cell_m"]), r["case"]) for r in every if r["case"].startswith(test.replace(".", "p"))
+                      and r["internal_length_m"] == "default" and float(r["speed_factor"]) == 1.0
+                      and float(r["cfl"]) == 0.5)
+        if not runs:
+            continue
+        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
+        curves = [(f"regularised, h = {h:g} m", read_curve(os.path.join(out, case, "load_settlement.csv"))) for h, case in runs]
+        curves.append(("Kimura et al. (1985)", read_curve(lab)))
+        lines += ["set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, test + '_curves.png'))}",
+                  "set grid", "set key top right", "set xlabel 'S/B'", "set ylabel 'q [kPa]'", "set xrange [0:0.25]",
+                  "set yrange [0:2600]", f"set title {gp_quoted(test + ': regularised (l = 0.085 m) against the centrifuge')}",
+                  "plot " + ", ".join(f"'-' using 1:2 with lines lw 2 title {gp_quoted(name)}" for name, _ in curves)]
+        for _, (S, q) in curves:
+            step = max(1, len(S) // 2000)  # a few thousand points draw the curve
+            lines.append("\n".join(f"{a} {b}" for a, b in zip(S[::step], q[::step])) + "\ne")
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
 
 
