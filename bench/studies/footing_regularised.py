@@ -133,7 +133,10 @@ def write_table_and_figures(out, rows):
     # internal length, the study's speed and CFL.
     lines = ["set terminal pngcairo size 1300,520 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h.png'))}",
              "set multiplot layout 1,2", "set grid", "set key top left", "set xlabel 'cell size h [m]'",
-             "set ylabel 'q_ult [kPa]'", "set xrange [0:0.2]", "set yrange [0:2600]"]
+             "set ylabel 'q_ult [kPa]'", "set xrange [0:0.2]", "set yrange [0:2600]",
+             # The biaxial test's resolution: a band independent of the cell from h = l/2 down.
+             "set arrow from 0.0425, graph 0 to 0.0425, graph 1 nohead dt 3",
+             "set label 'h = l/2' at 0.0445, graph 0.05"]
     kimura = {"V85.6": 1953, "H86.7": 1734}
     for test in ("V85.6", "H86.7"):
         loc = sorted((float(r["cell"]), float(r["q_ult_kPa"])) for r in local if r["test"] == test)
@@ -157,7 +160,7 @@ def write_table_and_figures(out, rows):
         lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
         curves = [(f"regularised, h = {h:g} m", read_curve(os.path.join(out, case, "load_settlement.csv"))) for h, case in runs]
         curves.append(("Kimura et al. (1985)", read_curve(lab)))
-        lines += ["set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, test + '_curves.png'))}",
+        lines += ["unset arrow", "unset label", "set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, test + '_curves.png'))}",
                   "set grid", "set key top right", "set xlabel 'S/B'", "set ylabel 'q [kPa]'", "set xrange [0:0.25]",
                   "set yrange [0:2600]", f"set title {gp_quoted(test + ': regularised (l = 0.085 m) against the centrifuge')}",
                   "plot " + ", ".join(f"'-' using 1:2 with lines lw 2 title {gp_quoted(name)}" for name, _ in curves)]
