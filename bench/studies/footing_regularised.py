@@ -12,7 +12,7 @@ first peak, q at S/B 0.1 and 0.25), OUT/<test>_curves.png (the runs over the cen
 and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
-  CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5]   (TEST V85.6 or H86.7)
+  CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded]   (TEST V85.6 or H86.7)
 """
 import argparse
 import csv
@@ -25,18 +25,22 @@ from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_path
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm", "convergence")
 BASE = {"V85.6": "kimura_V85.6_alpha0_h0045.json", "H86.7": "kimura_H86.7_alpha90_h0045.json"}
-FIELDS = ["case", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
+FIELDS = ["case", "grid", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
           "q_first_peak_kPa", "S_first_peak_over_B", "q_at_SB0.1_kPa", "q_at_SB0.25_kPa", "final_S_over_B",
           "max_kinetic_ratio", "status"]
 
 
 def parse_case(text):
     parts = text.split(",")
-    c = {"test": parts[0], "h": None, "l": "default", "speed": 1.0, "cfl": 0.5}
+    c = {"test": parts[0], "h": None, "l": "default", "speed": 1.0, "cfl": 0.5, "grid": "uniform"}
     for p in parts[1:]:
         k, v = p.split("=", 1)
-        c[k] = v if k == "l" else float(v)
+        c[k] = v if k in ("l", "grid") else float(v)
+    if c["grid"] not in ("uniform", "graded"):
+        sys.exit(f"{text}: grid is uniform or graded")
     tag = f"{c['test']}_h{c['h']:g}_l{c['l']}_v{c['speed']:g}_cfl{c['cfl']:g}"
+    if c["grid"] == "graded":
+        tag += "_graded"
     c["name"] = tag.replace(".", "p")
     return c
 
@@ -50,6 +54,8 @@ def scene_of(c, stop, threads):
     s["solver"]["threads"] = threads
     s["stop"] = {"S_over_B": stop}
     s["output"]["checkpoint_every_s"] = 600
+    if c["grid"] == "graded":
+        s["grid"]["graded"] = {}  # the documented window, growth and largest cell
     if c["l"] == "default":
         s["regularisation"] = {"acceleration_level": 30}  # Kimura's centrifuge; Toyoura's d50
     elif float(c["l"]) > 0:
@@ -93,7 +99,7 @@ def main():
         with open(os.path.join(a.out, "scenes", c["name"] + ".json")) as f:
             scene = json.load(f)
         l = scene.get("regularisation", {}).get("internal_length_m", None)
-        r = {"case": c["name"], "cell_m": c["h"], "internal_length_m": 0.0 if c["l"] == "0" else (l if l else "default"),
+        r = {"case": c["name"], "grid": c["grid"], "cell_m": c["h"], "internal_length_m": 0.0 if c["l"] == "0" else (l if l else "default"),
              "speed_factor": c["speed"], "cfl": c["cfl"], "q_ult_kPa": round(s["q_ult_kPa"], 1),
              "S_ult_over_B": round(s["S_ult_over_B"], 4), "wall_s": round(s["wall_s"], 1),
              "q_first_peak_kPa": s["q_first_peak_kPa"] and round(s["q_first_peak_kPa"], 1),

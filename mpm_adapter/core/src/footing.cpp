@@ -36,10 +36,10 @@ void Footing::constrain(const Grid& grid, NodeConstraints& c) const {
   const double h = grid.h, tol = 1e-9 * h;
   const double vfx = vx(), vfy = vy();
   const double centre = centre_x(), half = 0.5 * spec_.width;
-  const long long j_base = std::llround((base_y() - grid.y0) / grid.hy);
-  for (int j = static_cast<int>(std::max(0LL, j_base)); j < grid.ny; ++j)
+  const int j_base = grid.row_near(base_y());
+  for (int j = std::max(0, j_base); j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      const double x = grid.x0 + i * h;
+      const double x = grid.node_x(i);
       if (std::fabs(x - centre) > half + tol) continue;
       const std::size_t k = static_cast<std::size_t>(j) * grid.nx + i;
       c.set_y[k] = reaction_footing;
@@ -102,12 +102,11 @@ void Footing::touch(const Particles& P, const Grid& grid, double particle_half_w
 // over B + 4 l h + 3 h), and the nodes it moves accelerate together, so a node with little mass
 // (above the soil surface) never takes a stiff share of a contact spring.
 void Footing::spread(const Grid& grid, const double* mass, double* fx, double* fy) const {
-  const double h = grid.h;
   for (const Touch& touch : touching_) {
     const ContactForce& t = touch.force;
-    const double u = (t.at_x - grid.x0) / h, v = (t.at_y - grid.y0) / grid.hy;
-    const int i = static_cast<int>(std::floor(u)), j = static_cast<int>(std::floor(v));
-    const double a = u - i, b = v - j;
+    const Grid::Place px = grid.place_x(t.at_x), py = grid.place_y(t.at_y);
+    const int i = px.cell, j = py.cell;
+    const double a = px.fraction, b = py.fraction;
     const std::size_t k0 = static_cast<std::size_t>(j) * grid.nx + i;
     const std::size_t k[4] = {k0, k0 + 1, k0 + grid.nx, k0 + grid.nx + 1};
     double wt[4] = {(1 - a) * (1 - b) * mass[k[0]], a * (1 - b) * mass[k[1]], (1 - a) * b * mass[k[2]],

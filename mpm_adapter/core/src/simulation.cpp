@@ -27,6 +27,8 @@ Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
       materials_(std::move(materials)),
       particles_(std::move(particles)),
       particle_half_width_(particle_half_width) {
+  if (settings_.grid_follows_footing && grid_.graded())
+    throw SimulationError("the rows cannot follow the footing on a graded grid");
   if (settings_.grid_follows_footing && boundaries_.footing.active()) {
     // From the grid as built (spacing h): the base wall's row stays put, the row of the footing's
     // starting base follows it.
@@ -78,6 +80,7 @@ void Simulation::prepare() {
   w.pvy.assign(n, 0.0);
   w.nx = grid_.nx;
   w.scatter.configure(settings_.threads, N);
+  if (grid_.graded()) graded_domains();
   if (clock_.step == 0 || particles_.wave_speed.empty() ||
       std::all_of(particles_.wave_speed.begin(), particles_.wave_speed.end(), [](double c) { return c == 0.0; }))
     refresh_wave_speeds();
@@ -155,7 +158,50 @@ void Simulation::fail(std::size_t p, const std::string& what, const std::string&
   throw SimulationError(where + what, reproducer);
 }
 
+// On a graded grid, every particle's domain half-widths (m): the half-widths of the share of its
+// node cell it was built on (particle_half_width_ of the cell's width), so that the domains tile
+// the soil and the internal force integrates a uniform stress to none at interior nodes; in the
+// fine window particle_half_width_ h, as on the regular grid (docs/mpm.md, "The graded grid").
+void Simulation::graded_domains() {
+  const Particles& P = particles_;
+  domain_x_.resize(P.n);
+  domain_y_.resize(P.n);
+  const auto half_width = [&](const GradedAxis& a, double at) {
+    const int i = a.cell(at);
+    return particle_half_width_ * (a.node(i + 1) - a.node(i));
+  };
+  for (std::size_t p = 0; p < P.n; ++p) {
+    domain_x_[p] = half_width(grid_.graded_x, P.x_initial[p]);
+    domain_y_[p] = half_width(grid_.graded_y, P.y_initial[p]);
+  }
+}
+
+void Simulation::compute_shape_functions_graded() {
+  StepScratch& w = work_;
+  const Particles& P = particles_;
+  std::vector<long long> off_grid(w.scatter.threads(), -1);
+  parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
+    GradedWeights ax, ay;
+    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || !graded_weights(grid_.graded_x, P.x[p], domain_x_[p], ax) ||
+        !graded_weights(grid_.graded_y, P.y[p], domain_y_[p], ay)) {
+      if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
+      return;
+    }
+    w.first_i[p] = ax.first;
+    w.first_j[p] = ay.first;
+    std::copy_n(ax.w, 4, &w.wx[4 * p]);
+    std::copy_n(ax.dw, 4, &w.dwx[4 * p]);
+    std::copy_n(ay.w, 4, &w.wy[4 * p]);
+    std::copy_n(ay.dw, 4, &w.dwy[4 * p]);
+  });
+  for (long long p : off_grid)
+    if (p >= 0)
+      fail(static_cast<std::size_t>(p), "left the grid, or its domain moved onto cells less than its width (the "
+                                        "graded grid's refined window must hold every particle that moves far)");
+}
+
 void Simulation::compute_shape_functions() {
+  if (grid_.graded()) return compute_shape_functions_graded();
   StepScratch& w = work_;
   Particles& P = particles_;
   const double h = grid_.h, hy = grid_.hy;
@@ -299,8 +345,8 @@ void Simulation::velocity_gradients_averaged(const double* vx, const double* vy)
   parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
     const std::array<double, 4> L = w.velocity_gradient(p, vx, vy);
     std::copy(L.begin(), L.end(), &w.L[4 * p]);
-    const auto i = static_cast<std::size_t>(std::floor((P.x[p] - grid_.x0) / grid_.h));
-    const auto j = static_cast<std::size_t>(std::floor((P.y[p] - grid_.y0) / grid_.hy));
+    const auto i = static_cast<std::size_t>(grid_.place_x(P.x[p]).cell);
+    const auto j = static_cast<std::size_t>(grid_.place_y(P.y[p]).cell);
     w.cell[p] = j * static_cast<std::size_t>(grid_.nx) + i;
     w.volume[p] = P.volume(p);
   });

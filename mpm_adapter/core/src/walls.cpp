@@ -6,12 +6,6 @@
 
 namespace acst::mpm {
 
-namespace {
-
-int wall_node(double coordinate, double origin, double h) { return static_cast<int>(std::lround((coordinate - origin) / h)); }
-
-}  // namespace
-
 void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
   const int nx = grid.nx, ny = grid.ny;
   auto at = [&](int i, int j) -> double& { return q[static_cast<std::size_t>(j) * nx + i]; };
@@ -28,23 +22,23 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
   };
   if (left_side != WallKind::none) {
     const double s = sign(left_side, FieldKind::x);
-    const int il = wall_node(left, grid.x0, grid.h);
+    const int il = grid.column_near(left);
     for (int j = 0; j < ny; ++j) fold_line(s, std::min(il, nx - 1 - il), [&](int k) -> double& { return at(il + k, j); });
   }
   if (right_side != WallKind::none) {
     const double s = sign(right_side, FieldKind::x);
-    const int ir = wall_node(right, grid.x0, grid.h);
+    const int ir = grid.column_near(right);
     for (int j = 0; j < ny; ++j) fold_line(s, std::min(nx - 1 - ir, ir), [&](int k) -> double& { return at(ir - k, j); });
   }
   if (base_wall != WallKind::none) {
     const double s = sign(base_wall, FieldKind::y);
-    const int jb = wall_node(base, grid.y0, grid.hy);
+    const int jb = grid.row_near(base);
     for (int i = 0; i < nx; ++i) fold_line(s, std::min(jb, ny - 1 - jb), [&](int k) -> double& { return at(i, jb + k); });
   }
 }
 
 Walls::Lines Walls::lines(const Grid& grid) const {
-  return {wall_node(left, grid.x0, grid.h), wall_node(right, grid.x0, grid.h), wall_node(base, grid.y0, grid.hy)};
+  return {grid.column_near(left), grid.column_near(right), grid.row_near(base)};
 }
 
 int Walls::wall_of(int i, int j, const Lines& at) const {

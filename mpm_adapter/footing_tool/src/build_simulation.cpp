@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "acst_footing_tool/build_simulation.hpp"
@@ -55,6 +57,60 @@ void follow_particles(const Scene& s, const std::vector<std::shared_ptr<const Ab
   }
 }
 
+// One axis of the graded grid (docs/mpm.md, "The graded grid"): fine cells on the regular grid's
+// lattice (through lo.at) over the window, graded toward the ends outside it.
+GradedAxis graded_axis(const AxisEnd& lo, const AxisEnd& hi, double window_lo, double window_hi, const Scene& s,
+                       const char* axis) {
+  const GradedGridSpec& g = *s.graded;
+  try {
+    return GradedAxis(graded_knots(lo, hi, lo.at, window_lo, window_hi, {s.cell_size, g.growth, g.largest_cell}));
+  } catch (const std::invalid_argument& e) {
+    throw common::InputError(std::string("/grid/graded: along ") + axis + ", " + e.what());
+  }
+}
+
+Grid graded_grid(const Scene& s, const GridExtent& extent, double base_y) {
+  const FootingSpec& f = *s.footing;
+  const double h = s.cell_size, reach = f.width * s.graded->half_width_B;
+  constexpr int margin = GridExtent::margin;
+  const double top = extent.y_max + s.cells_above * h;  // the regular grid's top row
+  Grid grid;
+  grid.h = grid.hy = h;
+  grid.graded_x = graded_axis({extent.x_min, extent.cells_left}, {extent.x_max, extent.cells_left},
+                              f.centre_x - reach, f.centre_x + reach, s, "x");
+  grid.graded_y = graded_axis({extent.y_min, margin}, {top, 0}, base_y - f.width * s.graded->depth_B, top, s, "y");
+  grid.nx = grid.graded_x.nodes();
+  grid.ny = grid.graded_y.nodes();
+  grid.x0 = grid.graded_x.node(0);
+  grid.y0 = grid.graded_y.node(0);
+  return grid;
+}
+
+// The particles' centres and widths along one axis of a body from lo to hi: n per cell of the
+// regular grid (spacing h), or per node cell of the graded one, whose nodes the body's edges must
+// lie on.
+struct Row {
+  std::vector<double> at, width;
+};
+Row particle_row(double lo, double hi, double h, int n, const GradedAxis* graded, const std::string& path) {
+  Row r;
+  if (!graded) {
+    const double d = h / n;
+    const long long count = std::llround((hi - lo) / d);
+    for (long long k = 0; k < count; ++k) r.at.push_back(lo + (k + 0.5) * d), r.width.push_back(d);
+    return r;
+  }
+  const int first = graded->node_at(lo, 1e-9 * h), last = graded->node_at(hi, 1e-9 * h);
+  if (first < 0 || last < 0)
+    throw common::InputError(path + ": with /grid/graded the body's edges must lie on the graded grid's nodes (the "
+                             "soil's outer edges, or fine cells inside the refined window)");
+  for (int i = first; i < last; ++i) {
+    const double d = (graded->node(i + 1) - graded->node(i)) / n;
+    for (int k = 0; k < n; ++k) r.at.push_back(graded->node(i) + (k + 0.5) * d), r.width.push_back(d);
+  }
+  return r;
+}
+
 }  // namespace
 
 Simulation build_simulation(const Scene& scene) {
@@ -66,11 +122,17 @@ Simulation build_simulation(const Scene& scene) {
   const double x_min = extent.x_min, x_max = extent.x_max, y_min = extent.y_min;
   constexpr int margin = GridExtent::margin;
   Grid grid;
-  grid.h = grid.hy = h;
-  grid.x0 = x_min - extent.cells_left * h;
-  grid.y0 = y_min - margin * h;
-  grid.nx = static_cast<int>(extent.nodes_x);
-  grid.ny = static_cast<int>(extent.nodes_y);
+  if (s.graded) {
+    const double base_y = column_top(s, s.footing->centre_x);
+    if (!std::isfinite(base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
+    grid = graded_grid(s, extent, base_y);
+  } else {
+    grid.h = grid.hy = h;
+    grid.x0 = x_min - extent.cells_left * h;
+    grid.y0 = y_min - margin * h;
+    grid.nx = static_cast<int>(extent.nodes_x);
+    grid.ny = static_cast<int>(extent.nodes_y);
+  }
 
   Boundaries boundaries;
   Walls& walls = boundaries.walls;
@@ -90,12 +152,15 @@ Simulation build_simulation(const Scene& scene) {
   }
   int ppc = s.bodies.front().particles_per_cell;
   std::size_t count = 0, state_size = 0;
+  std::vector<Row> columns, rows;  // per body
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const BodySpec& b = s.bodies[i];
+    const std::string path = "/bodies/" + std::to_string(i);
     if (b.particles_per_cell != ppc)
-      throw common::InputError("/bodies/" + std::to_string(i) + "/particles_per_cell: all bodies must use the same number (B2GIMP's uniform particle domains)");
-    const long long cells = std::llround((b.x_max - b.x_min) / h) * std::llround((b.y_max - b.y_min) / h);
-    count += static_cast<std::size_t>(cells) * ppc * ppc;
+      throw common::InputError(path + "/particles_per_cell: all bodies must use the same number (B2GIMP's uniform particle domains)");
+    columns.push_back(particle_row(b.x_min, b.x_max, h, ppc, s.graded ? &grid.graded_x : nullptr, path));
+    rows.push_back(particle_row(b.y_min, b.y_max, h, ppc, s.graded ? &grid.graded_y : nullptr, path));
+    count += columns.back().at.size() * rows.back().at.size();
     state_size = std::max<std::size_t>(state_size, materials[index[b.material]]->state_size());
   }
   if (s.footing) {
@@ -106,7 +171,6 @@ Simulation build_simulation(const Scene& scene) {
 
   Particles P;
   P.resize(count, static_cast<int>(state_size));
-  const double d = h / ppc;
   std::size_t p = 0;
   for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
     const BodySpec& b = s.bodies[bi];
@@ -121,15 +185,15 @@ Simulation build_simulation(const Scene& scene) {
       const acst_status st = acst_bedding_direction(deposition, b.bedding_angle_deg, 1, 0, -1.0);
       if (st.code != ACST_OK) throw common::InputError(path + "/bedding_angle_deg: " + st.message);
     }
-    const long long ncx = std::llround((b.x_max - b.x_min) / d), ncy = std::llround((b.y_max - b.y_min) / d);
-    for (long long jy = 0; jy < ncy; ++jy)
-      for (long long ix = 0; ix < ncx; ++ix, ++p) {
-        const double x = b.x_min + (ix + 0.5) * d, y = b.y_min + (jy + 0.5) * d;
+    const Row &across = columns[bi], &up = rows[bi];
+    for (std::size_t jy = 0; jy < up.at.size(); ++jy)
+      for (std::size_t ix = 0; ix < across.at.size(); ++ix, ++p) {
+        const double x = across.at[ix], y = up.at[jy], dx = across.width[ix], dy = up.width[jy];
         P.x[p] = P.x_initial[p] = x;
         P.y[p] = P.y_initial[p] = y;
-        P.volume_initial[p] = d * d;
+        P.volume_initial[p] = dx * dy;
         P.density[p] = b.density;
-        P.weight_mass[p] = b.density * d * d;
+        P.weight_mass[p] = b.density * dx * dy;
         P.mass[p] = P.weight_mass[p] * s.solver.mass_scaling;
         P.material[p] = index[b.material];
         double* sig = &P.stress[6 * p];
@@ -145,12 +209,12 @@ Simulation build_simulation(const Scene& scene) {
         } catch (const MaterialError& err) {
           throw common::InputError(path + ": particle at (" + std::to_string(x) + ", " + std::to_string(y) + "): " + err.what());
         }
-        const bool top_row = y + d > column_top(s, x) - 1e-9 * h;
+        const bool top_row = y + dy > column_top(s, x) - 1e-9 * h;
         const bool under_footing = s.footing && std::fabs(x - s.footing->centre_x) < 0.5 * s.footing->width;
-        if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = d;
+        if (top_row && !under_footing && s.surcharge > 0.0) P.surcharge_length[p] = dx;
         if (s.confining_pressure > 0.0) {  // the soil's outermost columns, pushed inward
-          if (x - d < x_min + 1e-9 * h) P.side_length[p] = d;
-          if (x + d > x_max - 1e-9 * h) P.side_length[p] = -d;
+          if (x - dx < x_min + 1e-9 * h) P.side_length[p] = dy;
+          if (x + dx > x_max - 1e-9 * h) P.side_length[p] = -dy;
         }
       }
   }

@@ -157,13 +157,13 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
   });
   if (P.tracked != sim.particles().tracked) r.refuse("follows other particles than the scene's particle_histories");
   const Grid& g = sim.grid();
-  const double x_max = g.x0 + (g.nx - 1) * g.h, y_max = g.y0 + (g.ny - 1) * g.hy;
+  const double x_lo = g.node_x(0), y_lo = g.node_y(0), x_max = g.node_x(g.nx - 1), y_max = g.node_y(g.ny - 1);
   for (std::size_t p = 0; p < P.n; ++p) {
     if (P.material[p] < 0 || static_cast<std::size_t>(P.material[p]) >= sim.materials().size())
       r.refuse("gives particle " + std::to_string(p) + " a material index out of range");
     if (!(P.mass[p] > 0 && P.volume_initial[p] > 0 && P.density[p] > 0 && P.volume(p) > 0))
       r.refuse("gives particle " + std::to_string(p) + " a mass, density or volume that is not positive");
-    if (P.x[p] < g.x0 || P.x[p] > x_max || P.y[p] < g.y0 || P.y[p] > y_max)
+    if (P.x[p] < x_lo || P.x[p] > x_max || P.y[p] < y_lo || P.y[p] > y_max)
       r.refuse("puts particle " + std::to_string(p) + " off the grid");
   }
   for (const auto* records : {&st.history, &st.every_step})

@@ -111,6 +111,22 @@ Settings read_solver(const json& j, const std::string& p) {
 
 // The sand's nonlocal regularisation (docs/mpm.md, "Nonlocal regularisation"): its internal
 // length given, or derived from the grain size and the acceleration level (internal_length.hpp).
+// Defaults (docs/mpm.md, "The graded grid"): the dense footing's failure zone reaches about 1.5 B
+// from its centre and 1.5 B below its base (the reference study's shear-strain maps), and its
+// base travels 0.5 B: the window takes 2 B both ways; the largest cells are 4 fine ones.
+GradedGridSpec read_graded(const json& j, const std::string& p, double cell_size) {
+  f::allow_keys(j, {"window_half_width_B", "window_depth_B", "growth_ratio", "largest_cell"}, p);
+  GradedGridSpec g;
+  g.largest_cell = 4.0 * cell_size;
+  if (j.contains("window_half_width_B"))
+    g.half_width_B = f::number(j["window_half_width_B"], p + "/window_half_width_B", {0.5, 100.0});
+  if (j.contains("window_depth_B")) g.depth_B = f::number(j["window_depth_B"], p + "/window_depth_B", {0.5, 100.0});
+  if (j.contains("growth_ratio")) g.growth = f::number(j["growth_ratio"], p + "/growth_ratio", {1.0, 1.5, true, false});
+  if (j.contains("largest_cell"))
+    g.largest_cell = f::number(j["largest_cell"], p + "/largest_cell", {cell_size, 1000.0 * cell_size}, "m");
+  return g;
+}
+
 Regularisation read_regularisation(const json& j, const std::string& p) {
   f::allow_keys(j, {"internal_length_m", "d50_mm", "acceleration_level", "kernel", "averaged", "over_nonlocal",
                     "every_steps"},
@@ -299,7 +315,7 @@ Scene scene_from_document(const json& j, const std::string& file) {
   for (const char* k : {"grid", "materials", "bodies", "stop"})
     if (!j.contains(k)) f::fail("", std::string("'") + k + "' is required");
 
-  f::allow_keys(j["grid"], {"cell_size", "cells_above", "cells_beside", "follow_footing"}, "/grid");
+  f::allow_keys(j["grid"], {"cell_size", "cells_above", "cells_beside", "follow_footing", "graded"}, "/grid");
   if (!j["grid"].contains("cell_size")) f::fail("/grid", "'cell_size' is required");
   s.cell_size = f::number(j["grid"]["cell_size"], "/grid/cell_size", f::positive(), "m");
   if (j["grid"].contains("cells_above"))
@@ -308,6 +324,7 @@ Scene scene_from_document(const json& j, const std::string& file) {
     s.cells_beside = static_cast<int>(f::integer(j["grid"]["cells_beside"], "/grid/cells_beside", 0, 1000));
   const bool follow_footing =
       j["grid"].contains("follow_footing") && f::boolean(j["grid"]["follow_footing"], "/grid/follow_footing");
+  if (j["grid"].contains("graded")) s.graded = read_graded(j["grid"]["graded"], "/grid/graded", s.cell_size);
 
   read_materials(j["materials"], "/materials", dir, s);
   if (!j["bodies"].is_array() || j["bodies"].empty()) f::fail("/bodies", "expected a non-empty array of bodies");
@@ -360,6 +377,11 @@ Scene scene_from_document(const json& j, const std::string& file) {
   s.solver.gravity = s.gravity;
   if (follow_footing && !s.footing) f::fail("/grid/follow_footing", "needs a /footing (the rows follow its base)");
   s.solver.grid_follows_footing = follow_footing;
+  if (s.graded && !s.footing) f::fail("/grid/graded", "needs a /footing (the refined window lies around it)");
+  if (s.graded && follow_footing) f::fail("/grid/graded", "not with /grid/follow_footing (the rows keep their places)");
+  if (s.graded && s.solver.update == ParticleUpdate::FLIP)
+    f::fail("/solver/particle_update", "FLIP alone grows unstable on a graded grid (docs/mpm.md, \"The graded grid\"): "
+                                       "use XPIC (the default, FLIP between its steps) or PIC");
 
   f::allow_keys(j["stop"], {"S_over_B", "time", "steps"}, "/stop");
   const std::string stop = f::one_of(j["stop"], {"S_over_B", "time", "steps"}, "/stop");

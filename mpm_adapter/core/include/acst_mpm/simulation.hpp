@@ -86,6 +86,8 @@ class Simulation {
   void regularise();
   void refresh_time_step();
   void compute_shape_functions();
+  void compute_shape_functions_graded();
+  void graded_domains();
   void map_mass_and_momentum();
   void apply_constraints();
   void update_stress(const double* vx, const double* vy, double dt);
@@ -113,6 +115,7 @@ class Simulation {
   std::vector<std::shared_ptr<const AbiMaterial>> materials_;
   Particles particles_;
   double particle_half_width_ = 0.5;
+  std::vector<double> domain_x_, domain_y_;  // on a graded grid: each particle's domain half-widths, m
   struct FollowingRows {  // laid out once from the grid as built (docs/mpm.md)
     bool on = false;
     int fixed_row = 0, base_row = 0;

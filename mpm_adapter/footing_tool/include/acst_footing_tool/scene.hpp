@@ -69,9 +69,17 @@ struct OutputSpec {
 // K0 sigma_v), or isotropic (a biaxial test's consolidation).
 enum class InitialStress { zero, geostatic, isotropic };
 
+// /grid/graded (docs/mpm.md, "The graded grid"): cells of /grid/cell_size in a window around the
+// footing, its half-width and its depth below the footing's base in footing widths, growing by at
+// most `growth` per cell toward the walls, up to about `largest_cell` (m).
+struct GradedGridSpec {
+  double half_width_B = 2.0, depth_B = 2.0, growth = 1.2, largest_cell = 0.0;
+};
+
 struct Scene {
   std::string name, file, text;  // text: the canonical JSON, stored in checkpoints
   double cell_size = 0;
+  std::optional<GradedGridSpec> graded;
   int cells_above = 6;           // empty cells kept above the highest body (heave room)
   int cells_beside = 0;          // empty cells beside the bodies, more than the stencil's (free sides)
   std::vector<MaterialSpec> materials;
