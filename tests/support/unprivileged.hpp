@@ -37,4 +37,10 @@ inline int run_unprivileged(const std::function<int()>& body) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+// Whether the unprivileged user can read `path` (a test that runs a tool as that user on the
+// checkout's data cannot run where the checkout lies under a folder only its owner may enter).
+inline bool unprivileged_can_read(const std::filesystem::path& path) {
+  return run_unprivileged([&] { return ::access(path.c_str(), R_OK) == 0 ? 0 : 1; }) == 0;
+}
+
 }  // namespace acst::test
