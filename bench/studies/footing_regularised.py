@@ -12,7 +12,9 @@ first peak, q at S/B 0.1 and 0.25), OUT/<test>_curves.png (the runs over the cen
 and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
-  CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded]   (TEST V85.6 or H86.7)
+  CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
+        [,window=B]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell, default 4 h; window:
+        its window's half-width and depth in footing widths, default 2)
 """
 import argparse
 import csv
@@ -38,7 +40,13 @@ def parse_case(text):
         c[k] = v if k in ("l", "grid") else float(v)
     if c["grid"] not in ("uniform", "graded"):
         sys.exit(f"{text}: grid is uniform or graded")
+    for key in ("largest", "window"):
+        if key in c and c["grid"] != "graded":
+            sys.exit(f"{text}: {key} needs grid=graded")
     tag = f"{c['test']}_h{c['h']:g}_l{c['l']}_v{c['speed']:g}_cfl{c['cfl']:g}"
+    for key in ("largest", "window"):
+        if key in c:
+            tag += f"_{key}{c[key]:g}"
     if c["grid"] == "graded":
         tag += "_graded"
     c["name"] = tag.replace(".", "p")
@@ -56,6 +64,10 @@ def scene_of(c, stop, threads):
     s["output"]["checkpoint_every_s"] = 600
     if c["grid"] == "graded":
         s["grid"]["graded"] = {}  # the documented window, growth and largest cell
+        if "largest" in c:
+            s["grid"]["graded"]["largest_cell"] = c["largest"]
+        if "window" in c:
+            s["grid"]["graded"]["window_half_width_B"] = s["grid"]["graded"]["window_depth_B"] = c["window"]
     if c["l"] == "default":
         s["regularisation"] = {"acceleration_level": 30}  # Kimura's centrifuge; Toyoura's d50
     elif float(c["l"]) > 0:

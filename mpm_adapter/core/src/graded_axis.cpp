@@ -72,13 +72,6 @@ int GradedAxis::cell(double x) const {
   return std::clamp(i, 0, nodes() - 2);
 }
 
-double GradedAxis::shortest_interval_near(int k) const {
-  double shortest = INFINITY;
-  for (int j = std::max(k - 1, 0); j <= std::min(k + 1, static_cast<int>(knots_.size()) - 2); ++j)
-    shortest = std::min(shortest, knots_[j + 1] - knots_[j]);
-  return shortest;
-}
-
 bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out) {
   const double* t = axis.knots().data();
   const double a = x - l, b = x + l;

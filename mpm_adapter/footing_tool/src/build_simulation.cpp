@@ -32,8 +32,8 @@ double column_top(const Scene& s, double x) {
 }
 
 // The particle nearest each output/particle_histories position: it must be a sand's and lie
-// within a cell of the position (a position outside the soil, or in the half a symmetric run
-// leaves out, is an error, not the nearest particle far away).
+// within a cell (a graded grid's largest) of the position (a position outside the soil, or in
+// the half a symmetric run leaves out, is an error, not the nearest particle far away).
 void follow_particles(const Scene& s, const std::vector<std::shared_ptr<const AbiMaterial>>& materials, Particles& P) {
   const auto& tracks = s.output.particle_histories;
   P.tracked.clear();
@@ -46,8 +46,9 @@ void follow_particles(const Scene& s, const std::vector<std::shared_ptr<const Ab
       const double d2 = std::pow(P.x[p] - tracks[k].x, 2) + std::pow(P.y[p] - tracks[k].y, 2);
       if (d2 < best_d2) best = p, best_d2 = d2;
     }
-    if (!(best_d2 <= s.cell_size * s.cell_size))
-      throw common::InputError(at + ": no particle within a cell (" + std::to_string(s.cell_size) + " m) of (" +
+    const double cell = s.graded ? s.graded->largest_cell : s.cell_size;  // a graded grid's largest cell
+    if (!(best_d2 <= cell * cell))
+      throw common::InputError(at + ": no particle within a cell (" + std::to_string(cell) + " m) of (" +
                                std::to_string(tracks[k].x) + ", " + std::to_string(tracks[k].y) +
                                ") m in the modelled soil");
     if (!materials[static_cast<std::size_t>(P.material[best])]->is_sand())
@@ -121,10 +122,10 @@ Simulation build_simulation(const Scene& scene) {
   const GridExtent extent = grid_extent(s);
   const double x_min = extent.x_min, x_max = extent.x_max, y_min = extent.y_min;
   constexpr int margin = GridExtent::margin;
+  const double base_y = s.footing ? column_top(s, s.footing->centre_x) : 0.0;
+  if (!std::isfinite(base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
   Grid grid;
   if (s.graded) {
-    const double base_y = column_top(s, s.footing->centre_x);
-    if (!std::isfinite(base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
     grid = graded_grid(s, extent, base_y);
   } else {
     grid.h = grid.hy = h;
@@ -163,11 +164,7 @@ Simulation build_simulation(const Scene& scene) {
     count += columns.back().at.size() * rows.back().at.size();
     state_size = std::max<std::size_t>(state_size, materials[index[b.material]]->state_size());
   }
-  if (s.footing) {
-    const double base_y = column_top(s, s.footing->centre_x);
-    if (!std::isfinite(base_y)) throw common::InputError("/footing/centre_x: no body lies under the footing");
-    boundaries.footing = Footing(*s.footing, base_y);
-  }
+  if (s.footing) boundaries.footing = Footing(*s.footing, base_y);
 
   Particles P;
   P.resize(count, static_cast<int>(state_size));

@@ -6,7 +6,6 @@
 // weights are the splines averaged over a particle's undeformed domain [x - l, x + l] (B2GIMP on
 // uneven knots): a sum of unity, linear fields reproduced exactly (the Greville points are the
 // splines' linear coefficients), and a slope (N_i(x + l) - N_i(x - l)) / 2l.
-#include <string>
 #include <vector>
 
 namespace acst::mpm {
@@ -28,8 +27,6 @@ class GradedAxis {
   int node_at(double x, double tolerance) const;
   // The node cell i with node(i) <= x < node(i + 1), clamped to the first and last cell.
   int cell(double x) const;
-  // The shortest knot interval among k - 1 .. k + 1 (those that exist).
-  double shortest_interval_near(int k) const;
 
  private:
   std::vector<double> knots_, nodes_;
