@@ -72,6 +72,14 @@ int GradedAxis::cell(double x) const {
   return std::clamp(i, 0, nodes() - 2);
 }
 
+double widest_domain(const GradedAxis& axis, double x) {
+  const std::vector<double>& t = axis.knots();
+  const int k = axis.interval(x), last = static_cast<int>(t.size()) - 1;
+  if (k < 1 || k + 2 > last) return 0.0;
+  // Within [t_{k-1}, t_{k+1}] or within [t_k, t_{k+2}]: whichever leaves the wider domain.
+  return std::max(std::min(x - t[k - 1], t[k + 1] - x), std::min(x - t[k], t[k + 2] - x));
+}
+
 bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out) {
   const double* t = axis.knots().data();
   const double a = x - l, b = x + l;

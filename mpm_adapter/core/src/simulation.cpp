@@ -182,8 +182,12 @@ void Simulation::compute_shape_functions_graded() {
   std::vector<long long> off_grid(w.scatter.threads(), -1);
   parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
     GradedWeights ax, ay;
-    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || !graded_weights(grid_.graded_x, P.x[p], domain_x_[p], ax) ||
-        !graded_weights(grid_.graded_y, P.y[p], domain_y_[p], ay)) {
+    const GradedAxis &gx = grid_.graded_x, &gy = grid_.graded_y;
+    // A particle that moved onto smaller cells has its domain narrowed to cover two intervals (the
+    // stencil's 4 nodes): the weights stay continuous in x, a sum of unity and linear-complete.
+    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) ||
+        !graded_weights(gx, P.x[p], std::min(domain_x_[p], widest_domain(gx, P.x[p])), ax) ||
+        !graded_weights(gy, P.y[p], std::min(domain_y_[p], widest_domain(gy, P.y[p])), ay)) {
       if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
       return;
     }
@@ -196,8 +200,7 @@ void Simulation::compute_shape_functions_graded() {
   });
   for (long long p : off_grid)
     if (p >= 0)
-      fail(static_cast<std::size_t>(p), "left the grid, or its domain moved onto cells less than its width (the "
-                                        "graded grid's refined window must hold every particle that moves far)");
+      fail(static_cast<std::size_t>(p), "left the grid (the grid must reach two cells past every particle)");
 }
 
 void Simulation::compute_shape_functions() {

@@ -155,3 +155,16 @@ TEST(GradedAxis, ADomainOverThreeCellsOrOffTheKnotsIsRefused) {
   EXPECT_FALSE(graded_weights(axis, axis.knots().front() + 0.01, 0.001, g)) << "no node left of the first knots";
   EXPECT_FALSE(graded_weights(axis, std::nan(""), 0.01, g));
 }
+
+TEST(GradedAxis, TheWidestDomainCoversTwoIntervalsAndNeverClipsHalfAnEvenCell) {
+  const GradedAxis even = even_axis(1.0, 0.25, 40), graded = graded_axis_example();
+  for (double x = 3.0; x < 9.0; x += 0.0113) EXPECT_GE(widest_domain(even, x), 0.125 - 1e-15) << "x = " << x;
+  GradedWeights g;
+  for (double x = 1.0; x < 19.0; x += 0.00731) {
+    const double l = widest_domain(graded, x);
+    ASSERT_GT(l, 0.0) << "x = " << x;
+    EXPECT_TRUE(graded_weights(graded, x, l * (1 - 1e-9), g)) << "x = " << x;
+    EXPECT_FALSE(graded_weights(graded, x, l * 1.001 + 1e-9, g)) << "x = " << x << ": a wider domain would still fit";
+  }
+}
+

@@ -40,8 +40,12 @@ struct GradedWeights {
   double dw[4];
 };
 
-// False where the domain leaves the knots or covers more than two knot intervals (a particle
-// domain longer than the shortest interval it lies on; the stencil has 4 nodes).
+// The largest half-width of a domain at x that covers at most two knot intervals (the stencil's
+// 4 nodes): at least half the interval x lies in, so an evenly spaced axis never clips a domain of
+// up to half a cell.
+double widest_domain(const GradedAxis& axis, double x);
+
+// False where the domain leaves the knots or covers more than two knot intervals.
 bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out);
 
 // How an axis is graded (the scene's /grid/graded): cells of `fine` in a window, growing by at
