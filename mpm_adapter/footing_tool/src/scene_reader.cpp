@@ -111,9 +111,10 @@ Settings read_solver(const json& j, const std::string& p) {
 
 // The sand's nonlocal regularisation (docs/mpm.md, "Nonlocal regularisation"): its internal
 // length given, or derived from the grain size and the acceleration level (internal_length.hpp).
-// Defaults (docs/mpm.md, "The graded grid"): the dense footing's failure zone reaches about 1.5 B
-// from its centre and 1.5 B below its base (the reference study's shear-strain maps), and its
-// base travels 0.5 B: the window takes 2 B both ways; the largest cells are 4 fine ones.
+// Defaults (docs/mpm.md, "The graded grid"): the window reaches 3 B from the footing's centre and
+// 3 B below its base. With 2 B (the failure zone's 1.5 B and a margin) V85.6 carried 2.9 % more
+// before its peak than on the uniform grid; with 3 B the same to 0.01 %. The largest cells are 4
+// fine ones.
 GradedGridSpec read_graded(const json& j, const std::string& p, double cell_size) {
   f::allow_keys(j, {"window_half_width_B", "window_depth_B", "growth_ratio", "largest_cell"}, p);
   GradedGridSpec g;

@@ -73,7 +73,7 @@ enum class InitialStress { zero, geostatic, isotropic };
 // footing, its half-width and its depth below the footing's base in footing widths, growing by at
 // most `growth` per cell toward the walls, up to about `largest_cell` (m).
 struct GradedGridSpec {
-  double half_width_B = 2.0, depth_B = 2.0, growth = 1.2, largest_cell = 0.0;
+  double half_width_B = 3.0, depth_B = 3.0, growth = 1.2, largest_cell = 0.0;
 };
 
 struct Scene {
