@@ -2,10 +2,12 @@
 """The graded grid against the uniform one on the Kimura footings (docs/mpm.md, "The graded
 grid"; results in bench/results/footing_graded/).
 
-Reads the runs of bench/studies/footing_regularised.py: each graded case (grid=graded) against the
-uniform case of the same test, cell, internal length, speed and CFL, its reference. Writes
+Reads the runs of bench/studies/footing_regularised.py: each graded case (grid=graded, any window,
+largest cell and speed) against the uniform case of the same test, cell, internal length and CFL
+at the study's speed, its reference. Writes
 OUT/graded.csv (case, grid, cell_m, internal_length_m, speed_factor, threads, q_ult_kPa,
-S_ult_over_B, rms_vs_reference_pct, wall_s, and the S/B range of the comparison) and
+S_ult_over_B, rms_vs_reference_pct over the S/B range both runs reach, the same to S/B 0.1 (before
+the peak), wall_s, particles, steps, the window and the largest cell) and
 OUT/<test>_graded.png (both grids' curves).
 
   python3 bench/studies/footing_graded.py --uniform DIR --graded DIR [--out DIR]
@@ -15,12 +17,14 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 
 from footing_common import ROOT, gp_quoted, read_curve
 
 FIELDS = ["case", "grid", "cell_m", "internal_length_m", "speed_factor", "threads", "q_ult_kPa", "S_ult_over_B",
-          "rms_vs_reference_pct", "wall_s", "particles", "compared_to_S_over_B", "reference"]
+          "rms_vs_reference_pct", "rms_to_SB0.1_pct", "wall_s", "particles", "steps", "window_B", "largest_cell_m", "compared_to_S_over_B",
+          "reference"]
 
 
 def interpolate(S, q, at):
@@ -50,7 +54,11 @@ def run_row(folder, case, grid, scene_dir):
         scene = json.load(f)
     reg = scene.get("regularisation")
     l = reg.get("internal_length_m", "default (from the grains at 30 g)") if reg else 0.0
+    graded = scene["grid"].get("graded")
+    window = graded.get("window_half_width_B", "") if graded is not None else ""
+    largest = graded.get("largest_cell", 4 * scene["grid"]["cell_size"]) if graded is not None else ""
     return {"case": case, "grid": grid, "cell_m": scene["grid"]["cell_size"], "internal_length_m": l,
+            "window_B": window, "largest_cell_m": largest, "steps": s["steps"],
             "speed_factor": round(scene["footing"]["speed"] / 0.045, 4), "threads": s["threads"],
             "q_ult_kPa": round(s["q_ult_kPa"], 1), "S_ult_over_B": round(s["S_ult_over_B"], 4),
             "wall_s": round(s["wall_s"], 1), "particles": s["particles"], "final": s["final_S_over_B"]}
@@ -67,7 +75,9 @@ def main():
     for case in sorted(os.listdir(a.graded)):
         if not case.endswith("_graded") or not os.path.exists(os.path.join(a.graded, case, "summary.json")):
             continue
-        reference = case[: -len("_graded")]
+        # The uniform run of the same test, cell, length and CFL at the study's speed.
+        reference = re.sub(r"_(window|largest)[0-9p]+", "", case[: -len("_graded")])
+        reference = re.sub(r"_v[0-9p]+_", "_v1_", reference)
         if not os.path.exists(os.path.join(a.uniform, reference, "summary.json")):
             print(f"{case}: no uniform run {reference} in {a.uniform}")
             continue
@@ -76,9 +86,12 @@ def main():
         cu = read_curve(os.path.join(a.uniform, reference, "load_settlement.csv"))
         cg = read_curve(os.path.join(a.graded, case, "load_settlement.csv"))
         top = round(min(g.pop("final"), u.pop("final")), 3)
-        u.update(rms_vs_reference_pct=0.0, compared_to_S_over_B=top, reference=reference)
-        g.update(rms_vs_reference_pct=round(rms_pct(cu, cg, top), 2), compared_to_S_over_B=top, reference=reference)
-        rows += [u, g]
+        u.update({"rms_vs_reference_pct": 0.0, "rms_to_SB0.1_pct": 0.0, "compared_to_S_over_B": top, "reference": reference})
+        g.update({"rms_vs_reference_pct": round(rms_pct(cu, cg, top), 2), "rms_to_SB0.1_pct": round(rms_pct(cu, cg, 0.1), 2),
+                  "compared_to_S_over_B": top, "reference": reference})
+        if not any(r["case"] == reference for r in rows):
+            rows.append(u)
+        rows.append(g)
         pairs.append((case, cu, cg))
         print(json.dumps(g))
     with open(os.path.join(a.out, "graded.csv"), "w", newline="") as f:

@@ -17,14 +17,15 @@ namespace {
 
 std::string graded_key(const std::string& window) { return R"(, "graded": )" + window; }
 
-// Weightless Tresca soil (s_u 10 kPa, E 1000 s_u) 6 B x 2.5 B under a rough footing B = 1 m, h = B/10:
+// Weightless Tresca soil (s_u 10 kPa, E 1000 s_u) 6 B x 2.5 B under a rough footing B = 1 m at
+// 0.05 m/s (both grids alike; the test compares them, not Prandtl), h = B/10:
 // Prandtl's mechanism reaches about 1.2 B from the centre and 0.7 B deep, inside the window of
 // 1.6 B either side and 1 B deep; outside it the cells grow by 1.2 up to 0.4 m.
 std::string wide_tresca(const std::string& graded) {
   return R"({"name": "prandtl", "grid": {"cell_size": 0.1)" + graded + R"(},
     "materials": {"clay": {"model": "von_mises", "parameters": {"E": 10000, "nu": 0.3, "undrained_shear_strength": 10}}},
     "bodies": [{"material": "clay", "x_range": [0, 6], "y_range": [0, 2.5], "density": 1000}],
-    "footing": {"width": 1.0, "centre_x": 3.0, "speed": 0.02, "interface": "rough"},
+    "footing": {"width": 1.0, "centre_x": 3.0, "speed": 0.05, "interface": "rough"},
     "solver": {"grid_damping": 2, "particle_update": "XPIC", "xpic_order": 4, "xpic_every": 20},
     "stop": {"S_over_B": 0.1}})";
 }
@@ -46,7 +47,11 @@ TEST(GradedGrid, PrandtlsLoadWithAFineWindowIsTheUniformFineGridsWithinOnePercen
   RecordProperty("graded_q_kPa", std::to_string(graded));
   // Both near (2 + pi) s_u; the stated tolerance is between the two grids.
   EXPECT_NEAR(graded, uniform, 0.01 * uniform) << "uniform " << uniform << " kPa, graded " << graded << " kPa";
-  EXPECT_NEAR(uniform, (2 + 3.14159265358979) * 10, 0.15 * 51.4) << "a sanity bound on the uniform grid's load";
+  // A sanity bound on the uniform grid's load: above Prandtl's and within the 15 % a rough footing
+  // carries over it at B/10 (FootingContact's Prandtl test) and the faster footing's few percent.
+  const double prandtl = (2 + 3.14159265358979) * 10;
+  EXPECT_GT(uniform, prandtl);
+  EXPECT_LT(uniform, 1.2 * prandtl);
 }
 
 TEST(GradedGrid, TheFarFieldHoldsFewParticles) {
@@ -67,14 +72,14 @@ TEST(GradedGrid, TheFarFieldHoldsFewParticles) {
 
 TEST(GradedGrid, RigidPlateOnALayerGradedBelowGivesTheUniaxialStiffness) {
   // As FootingContact.RigidPlateOnConfinedElasticLayerGivesTheUniaxialStiffness, with the window
-  // 0.5 m deep: the cells grow from 0.05 m to 0.2 m toward the base 2 m down. XPIC(4) every 20
+  // 0.5 m deep: the cells grow from 0.1 m to 0.4 m toward the base 2 m down. XPIC(4) every 20
   // steps, FLIP between: FLIP alone is refused on a graded grid (it grew unstable here).
   const double W = 1.0, H = 2.0, E = 1e4, nu = 0.3;
-  std::string scene = mpm_test::elastic_block(W, H, 0.05, E, nu, 1000.0,
+  std::string scene = mpm_test::elastic_block(W, H, 0.1, E, nu, 1000.0,
                                               R"("footing": {"width": 1.0, "centre_x": 0.5, "speed": 0.002}, "stop": {"steps": 1})",
                                               R"({"grid_damping": 10, "particle_update": "XPIC"})");
-  const std::string cell = R"("cell_size": 0.050000)";
-  scene.replace(scene.find(cell), cell.size(), cell + graded_key(R"({"window_depth_B": 0.5, "largest_cell": 0.2})"));
+  const std::string cell = R"("cell_size": 0.100000)";
+  scene.replace(scene.find(cell), cell.size(), cell + graded_key(R"({"window_depth_B": 0.5, "largest_cell": 0.4})"));
   Simulation s = mpm_test::build(scene);
   ASSERT_TRUE(s.grid().graded());
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
