@@ -76,8 +76,10 @@ double widest_domain(const GradedAxis& axis, double x) {
   const std::vector<double>& t = axis.knots();
   const int k = axis.interval(x), last = static_cast<int>(t.size()) - 1;
   if (k < 1 || k + 2 > last) return 0.0;
-  // Within [t_{k-1}, t_{k+1}] or within [t_k, t_{k+2}]: whichever leaves the wider domain.
-  return std::max(std::min(x - t[k - 1], t[k + 1] - x), std::min(x - t[k], t[k + 2] - x));
+  // Within [t_{k-1}, t_{k+1}] or within [t_k, t_{k+2}]: whichever leaves the wider domain, a
+  // rounding's width inside it (x - l would otherwise round onto the next interval: a run stopped).
+  constexpr double inside = 1.0 - 1e-12;
+  return inside * std::max(std::min(x - t[k - 1], t[k + 1] - x), std::min(x - t[k], t[k + 2] - x));
 }
 
 bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out) {
