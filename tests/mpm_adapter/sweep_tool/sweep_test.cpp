@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -48,6 +49,17 @@ std::string parse_error(const std::string& text) {
 }
 
 using acst::test::Cli;
+
+// The targets of a Markdown text's links and images that are not URLs, without their anchors.
+std::vector<std::string> relative_links(const std::string& markdown) {
+  std::vector<std::string> out;
+  const std::regex link(R"(\]\(([^)\s]+)\))");
+  for (auto it = std::sregex_iterator(markdown.begin(), markdown.end(), link); it != std::sregex_iterator(); ++it) {
+    const std::string target = (*it)[1].str();
+    if (target.find("://") == std::string::npos && target.front() != '#') out.push_back(target.substr(0, target.find('#')));
+  }
+  return out;
+}
 
 Cli sweep(const std::vector<std::string>& args) {
   return acst::test::run_cli([](const auto& a, auto& o, auto& e) { return sweep_cli(a, o, e); }, args);
@@ -425,13 +437,22 @@ TEST(SweepRun, AnInclinedLoadShearsMoreSoilOnTheSideItPushesTowards) {
   const fs::path file = write(dir / "sweep.json", description(R"([{"name": "beta20", "set": {"/footing/inclination_deg": 20, "/stop/S_over_B": 0.1}}])",
                                                               R"("gather": {"case_figures": ["load_settlement.png"]})"));
   const std::string out = (dir / "out").string();
-  ASSERT_EQ(sweep({"--quiet", "--threads", "1", "--output", out, file.string()}).rc, 0);
+  const fs::path extra = dir / "docs" / "study.md";  // a report in another folder, as docs/reference-study.md
+  fs::create_directories(extra.parent_path());
+  ASSERT_EQ(sweep({"--quiet", "--threads", "1", "--output", out, "--report", extra.string(), file.string()}).rc, 0);
   // With figures: the group's overlay and the case's own figure the description asks for, linked.
   EXPECT_TRUE(fs::exists(fs::path(out) / "figures" / "all.png"));
   EXPECT_TRUE(fs::exists(fs::path(out) / "figures" / "cases" / "beta20_load_settlement.png"));
   EXPECT_NE(acst::common::read_input_file((fs::path(out) / "report.md").string())
                 .find("[load_settlement.png](figures/cases/beta20_load_settlement.png)"),
             std::string::npos);
+  // Every link either report holds resolves from the report's own folder.
+  for (const fs::path& report : {fs::path(out) / "report.md", extra}) {
+    const std::vector<std::string> links = relative_links(acst::common::read_input_file(report.string()));
+    EXPECT_EQ(links.size(), 2u) << report;  // the overlay and the case's figure
+    for (const std::string& link : links)
+      EXPECT_TRUE(fs::exists(report.parent_path() / link)) << report << " links " << link;
+  }
   const json row = read_json(fs::path(out) / "table.json")["cases"][0];
   EXPECT_GT(row["sheared_area_right_at_end_m2"].get<double>(), 1.5 * row["sheared_area_left_at_end_m2"].get<double>());
   EXPECT_GT(row["heave_right_at_end_m"].get<double>(), row["heave_left_at_end_m"].get<double>());
