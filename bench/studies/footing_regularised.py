@@ -14,7 +14,7 @@ and OUT/q_ult_against_h.png.
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
         [,window=B]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell, default 4 h; window:
-        its window's half-width and depth in footing widths, default 2)
+        its window's half-width and depth in footing widths, default 3)
 """
 import argparse
 import csv
