@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Cell-size convergence study of the Kimura footings (docs/mpm.md, "The Kimura footings with the
+"""Cell-size convergence study of the Kimura footings (docs/footing-study.md, "The Kimura footings with the
 contact footing", "Cell size"; results in bench/results/footing_convergence/).
 
 Runs each scene with acst_mpm (skipping those whose summary.json already exists, so the study

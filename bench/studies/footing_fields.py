@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Maps of particle fields of footing runs side by side (docs/mpm.md, "Convergence and the Kimura tests").
+"""Maps of particle fields of footing runs side by side (docs/footing-study.md, "The Kimura footings with the contact footing").
 
 Reads the ParaView snapshots (particles.pvd / particles_NNNN.vtp) of each run folder, takes the
 snapshot nearest to the settlement asked for (S/B from the run's load_settlement.csv), and writes

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The initial slope of the Kimura footing curves against an elastic estimate (docs/mpm.md, "The initial slope").
+"""The initial slope of the Kimura footing curves against an elastic estimate (docs/footing-study.md, "The initial slope").
 
 For each load level q (kPa) it prints the settlement S/B at which a curve first reaches q and the
 secant q / (S/B), for the MPM runs given and for Kimura et al.'s (1985) centrifuge curves. The

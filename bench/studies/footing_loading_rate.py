@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Is the Kimura footing's peak converged in the loading rate? (docs/mpm.md, "Loading rate")
+"""Is the Kimura footing's peak converged in the loading rate? (docs/footing-study.md, "Loading rate")
 
 Runs the Kimura V85.6 and H86.7 scenes on the symmetric half domain with one stress update per
 step (the reference study's sweep settings) at the footing speed 0.045 m/s and at 1/2, 1/4 and

@@ -14,7 +14,7 @@ scene of tests/mpm_adapter/core/footing_test.cpp). q = V/B averaged over S/B 0.0
     half a cell off the nodes, the node-row footing, and the load further on (S/B 0.05-0.25);
     with the rows following: Coulomb friction, the edges half a cell off, node rows, 0.01 m/s and
     the load further on.
-  - where the scene is what Prandtl's solution describes (docs/mpm.md, "What Prandtl's load
+  - where the scene is what Prandtl's solution describes (docs/footing-study.md, "What Prandtl's load
     measures"): E = 10^4 s_u, which collapses by S/B 0.003, every step's load over S/B 0.005-0.01;
     the particle update's filter every 20, 100, 500, 1000 steps and FLIP alone, rows following and
     fixed, B/10 and B/20, rough and smooth.

@@ -64,14 +64,14 @@ inline std::string tresca(double h, const std::string& interface, double speed, 
 // q = V/B averaged over S/B 0.02-0.05 on the Tresca scene: past failure (E = 1000 s_u fails by
 // S/B 0.015), before the footing is embedded deeper than half a cell at h = B/10. At 0.02 m/s the
 // velocity filtering of XPIC every 20 steps resists like a viscosity: with the rows following it
-// adds 4 % of Prandtl's load against FLIP alone (docs/mpm.md, "What Prandtl's load measures").
+// adds 4 % of Prandtl's load against FLIP alone (docs/footing-study.md, "What Prandtl's load measures").
 inline double prandtl_q(double h, const std::string& interface, bool follow_footing = false) {
   acst::mpm::Simulation s = build(tresca(h, interface, 0.02, "penalty", follow_footing));
   return mean_q(run(s, 20, [](const acst::mpm::Simulation& x) { return x.footing().settlement() >= 0.05; }), 1.0, 0.02,
                 0.05);
 }
 
-// q = V/B where the scene is what Prandtl's solution describes (docs/mpm.md, "What Prandtl's load
+// q = V/B where the scene is what Prandtl's solution describes (docs/footing-study.md, "What Prandtl's load
 // measures"): a stiff soil (E = 10^4 s_u) that collapses by S/B 0.003, before the footing has
 // changed the geometry, and the particle update's filter every 500 steps instead of 20, from where
 // on the footing's speed no longer changes the load. Every step's load, averaged over S/B 0.005-0.01;

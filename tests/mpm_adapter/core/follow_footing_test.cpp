@@ -83,7 +83,7 @@ TEST(GridFollowsFooting, PrandtlBearingCapacityAtATenthOfTheWidth) {
 // Prandtl's (2 + pi) s_u is the collapse load of a rigid-plastic soil under a footing on the
 // undeformed surface; mpm_test::prandtl_q_rigid_plastic measures where the scene is that (E = 10^4
 // s_u, the filter rare enough that the speed no longer matters). The goal: within 3 % at h = B/10, closer at B/20,
-// rough and smooth. Measured (docs/mpm.md, "What Prandtl's load measures"): rough +2.1 % and
+// rough and smooth. Measured (docs/footing-study.md, "What Prandtl's load measures"): rough +2.1 % and
 // +1.2 %, smooth -0.6 % and -0.2 %. Stated tolerances: the goal's.
 TEST(GridFollowsFooting, PrandtlBearingCapacityOnTrescaSoilWithinThreePercentAtATenthOfTheWidth) {
   const double prandtl = (2 + pi) * 10.0;  // kPa

@@ -501,7 +501,7 @@ static std::pair<std::vector<double>, std::vector<double>> sampled(const std::ve
   return {S, q};
 }
 
-// Dense sand's footing curve may rise to a first peak, dip and rise to a higher hump (docs/mpm.md,
+// Dense sand's footing curve may rise to a first peak, dip and rise to a higher hump (docs/footing-study.md,
 // "Loading rate"): the first peak is the first load that no load within 0.01 B of it exceeds.
 TEST(FirstPeak, IsTheOnsetOfSofteningNotTheLargestLoad) {
   // Up to 1000 at S/B 0.09, down to 950 at 0.1, up to 1300 at 0.15, down to 800 at 0.2.

@@ -1,5 +1,5 @@
 #pragma once
-// The gathered outputs of a sweep (docs/sweeps.md, "What it gathers"): the table of its cases'
+// The gathered outputs of a sweep (docs/sweeps.md, "The table"): the table of its cases'
 // rows as table.csv, table.md and table.json, and one figure per group overlaying the load curves
 // of its cases with the lab curves their scenes name.
 #include <nlohmann/json.hpp>
