@@ -65,9 +65,11 @@ def max_kinetic_ratio(path, from_S_over_B=0.02):
 
 
 def rms_difference_pct(curve, ref_curve, upto, q_scale):
-    """RMS of curve - ref_curve over S/B 0.005..upto in steps of 0.005, in % of q_scale."""
+    """RMS of curve - ref_curve over S/B 0.005..upto in steps of 0.005, in % of q_scale; points
+    outside either record (a record averaged over long periods starts late) are left out."""
     grid = [0.005 * k for k in range(1, int(round(upto / 0.005)) + 1)]
     d = [value_at(*curve, x) - value_at(*ref_curve, x) for x in grid]
+    d = [v for v in d if not math.isnan(v)]
     return round(100.0 * math.sqrt(sum(v * v for v in d) / len(d)) / q_scale, 2)
 
 
