@@ -13,8 +13,9 @@ and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
-        [,window=B]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell, default 4 h; window:
-        its window's half-width and depth in footing widths, default 3)
+        [,window=B][,set=acst|isotropic]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell,
+        default 4 h; window: its window's half-width and depth in footing widths, default 3; set: the
+        delivered ACST set, or the delivered isotropic one, data/parameters/toyoura_isotropic_calibrated.json)
 """
 import argparse
 import csv
@@ -27,6 +28,7 @@ from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_path
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm", "convergence")
 BASE = {"V85.6": "kimura_V85.6_alpha0_h0045.json", "H86.7": "kimura_H86.7_alpha90_h0045.json"}
+SETS = {"acst": None, "isotropic": os.path.join(ROOT, "data", "parameters", "toyoura_isotropic_calibrated.json")}
 FIELDS = ["case", "grid", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
           "q_first_peak_kPa", "S_first_peak_over_B", "q_at_SB0.1_kPa", "q_at_SB0.25_kPa", "final_S_over_B",
           "max_kinetic_ratio", "status"]
@@ -34,12 +36,14 @@ FIELDS = ["case", "grid", "cell_m", "internal_length_m", "speed_factor", "cfl", 
 
 def parse_case(text):
     parts = text.split(",")
-    c = {"test": parts[0], "h": None, "l": "default", "speed": 1.0, "cfl": 0.5, "grid": "uniform"}
+    c = {"test": parts[0], "h": None, "l": "default", "speed": 1.0, "cfl": 0.5, "grid": "uniform", "set": "acst"}
     for p in parts[1:]:
         k, v = p.split("=", 1)
-        c[k] = v if k in ("l", "grid") else float(v)
+        c[k] = v if k in ("l", "grid", "set") else float(v)
     if c["grid"] not in ("uniform", "graded"):
         sys.exit(f"{text}: grid is uniform or graded")
+    if c["set"] not in SETS:
+        sys.exit(f"{text}: set is one of {', '.join(SETS)}")
     for key in ("largest", "window"):
         if key in c and c["grid"] != "graded":
             sys.exit(f"{text}: {key} needs grid=graded")
@@ -49,6 +53,8 @@ def parse_case(text):
             tag += f"_{key}{c[key]:g}"
     if c["grid"] == "graded":
         tag += "_graded"
+    if c["set"] != "acst":
+        tag += "_" + c["set"]
     c["name"] = tag.replace(".", "p")
     return c
 
@@ -62,6 +68,8 @@ def scene_of(c, stop, threads):
     s["solver"]["threads"] = threads
     s["stop"] = {"S_over_B": stop}
     s["output"]["checkpoint_every_s"] = 600
+    if SETS[c["set"]]:
+        s["materials"] = {k: SETS[c["set"]] for k in s["materials"]}
     if c["grid"] == "graded":
         s["grid"]["graded"] = {}  # the documented window, growth and largest cell
         if "largest" in c:
