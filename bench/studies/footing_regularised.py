@@ -13,9 +13,10 @@ and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
-        [,window=B][,set=acst|isotropic]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell,
+        [,window=B][,set=acst|isotropic][,m=1]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell,
         default 4 h; window: its window's half-width and depth in footing widths, default 3; set: the
-        delivered ACST set, or the delivered isotropic one, data/parameters/toyoura_isotropic_calibrated.json)
+        delivered ACST set, or the delivered isotropic one, data/parameters/toyoura_isotropic_calibrated.json;
+        m: the regularisation's over-nonlocal factor)
 """
 import argparse
 import csv
@@ -29,7 +30,7 @@ from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_path
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm", "convergence")
 BASE = {"V85.6": "kimura_V85.6_alpha0_h0045.json", "H86.7": "kimura_H86.7_alpha90_h0045.json"}
 SETS = {"acst": None, "isotropic": os.path.join(ROOT, "data", "parameters", "toyoura_isotropic_calibrated.json")}
-FIELDS = ["case", "grid", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
+FIELDS = ["case", "grid", "set", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
           "q_first_peak_kPa", "S_first_peak_over_B", "q_at_SB0.1_kPa", "q_at_SB0.25_kPa", "final_S_over_B",
           "max_kinetic_ratio", "status"]
 
@@ -48,7 +49,7 @@ def parse_case(text):
         if key in c and c["grid"] != "graded":
             sys.exit(f"{text}: {key} needs grid=graded")
     tag = f"{c['test']}_h{c['h']:g}_l{c['l']}_v{c['speed']:g}_cfl{c['cfl']:g}"
-    for key in ("largest", "window"):
+    for key in ("largest", "window", "m"):
         if key in c:
             tag += f"_{key}{c[key]:g}"
     if c["grid"] == "graded":
@@ -80,6 +81,10 @@ def scene_of(c, stop, threads):
         s["regularisation"] = {"acceleration_level": 30}  # Kimura's centrifuge; Toyoura's d50
     elif float(c["l"]) > 0:
         s["regularisation"] = {"internal_length_m": float(c["l"])}
+    if "m" in c:
+        if "regularisation" not in s:
+            sys.exit(f"{c['name']}: m needs a regularisation (l > 0)")
+        s["regularisation"]["over_nonlocal"] = c["m"]
     return s
 
 
@@ -96,6 +101,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--stop", type=float, default=0.25, help="S/B to run to")
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    ap.add_argument("--no-run", action="store_true",
+                    help="run nothing: tabulate the cases OUT holds, a run that stopped early from its failure record")
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
     os.makedirs(os.path.join(a.out, "scenes"), exist_ok=True)
@@ -104,6 +111,16 @@ def main():
         c = parse_case(text)
         run_dir = os.path.join(a.out, c["name"])
         summary_file = os.path.join(run_dir, "summary.json")
+        failed_record = os.path.join(run_dir, "load_settlement.failed.csv")
+        if a.no_run and not os.path.exists(summary_file):
+            if os.path.exists(failed_record):
+                S, q = read_curve(failed_record)
+                k = max(range(len(S)), key=lambda i: q[i])
+                rows.append({"case": c["name"], "grid": c["grid"], "set": c["set"], "cell_m": c["h"], "internal_length_m": c["l"],
+                             "speed_factor": c["speed"], "cfl": c["cfl"], "q_ult_kPa": round(q[k], 1),
+                             "S_ult_over_B": round(S[k], 4), "q_at_SB0.1_kPa": round(interpolate(S, q, 0.1), 1),
+                             "final_S_over_B": round(S[-1], 4), "status": f"stopped at S/B {S[-1]:.3f} (load_settlement.failed.csv)"})
+            continue
         if not os.path.exists(summary_file):
             path = os.path.join(a.out, "scenes", c["name"] + ".json")
             with open(path, "w") as f:
@@ -119,7 +136,7 @@ def main():
         with open(os.path.join(a.out, "scenes", c["name"] + ".json")) as f:
             scene = json.load(f)
         l = scene.get("regularisation", {}).get("internal_length_m", None)
-        r = {"case": c["name"], "grid": c["grid"], "cell_m": c["h"], "internal_length_m": 0.0 if c["l"] == "0" else (l if l else "default"),
+        r = {"case": c["name"], "grid": c["grid"], "set": c["set"], "cell_m": c["h"], "internal_length_m": 0.0 if c["l"] == "0" else (l if l else "default"),
              "speed_factor": c["speed"], "cfl": c["cfl"], "q_ult_kPa": round(s["q_ult_kPa"], 1),
              "S_ult_over_B": round(s["S_ult_over_B"], 4), "wall_s": round(s["wall_s"], 1),
              "q_first_peak_kPa": s["q_first_peak_kPa"] and round(s["q_first_peak_kPa"], 1),
@@ -154,37 +171,50 @@ def write_table_and_figures(out, rows):
         w.writeheader()
         w.writerows(old + rows + local_rows)
     with open(table) as f:
-        every = [r for r in csv.DictReader(f) if r["status"] == "done"]
+        every = [r for r in csv.DictReader(f) if r["status"] == "done" or r["status"].startswith("stopped")]
+    for r in every:  # rows of tables written before the grid and set columns
+        r["grid"] = r.get("grid") or "uniform"
+        r["set"] = r.get("set") or "acst"
+    # The series of each figure: the regularised runs at the default internal length, the study's
+    # speed and CFL and m = 1, by grid and parameter set.
+    series = [("uniform", "acst", "regularised, uniform grid"), ("graded", "acst", "regularised, graded grid (3 B window)"),
+              ("graded", "isotropic", "regularised, graded grid, isotropic set")]
+    def reference_runs(test, grid, kind):
+        return sorted((float(r["cell_m"]), r["case"], float(r["q_ult_kPa"])) for r in every
+                      if r["case"].startswith(test.replace(".", "p")) and r["internal_length_m"] == "default"
+                      and float(r["speed_factor"]) == 1.0 and float(r["cfl"]) == 0.5 and r["grid"] == grid
+                      and r["set"] == kind and "_m" not in r["case"].split("_cfl")[1]
+                      and (grid == "uniform" or "window3" in r["case"]))
     # q_ult against the cell: the local model's study and the regularised runs at the default
     # internal length, the study's speed and CFL.
     lines = ["set terminal pngcairo size 1300,520 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h.png'))}",
-             "set multiplot layout 1,2", "set grid", "set key top left", "set xlabel 'cell size h [m]'",
-             "set ylabel 'q_ult [kPa]'", "set xrange [0:0.2]", "set yrange [0:2600]",
+             "set multiplot layout 1,2", "set grid", "set key bottom right", "set xlabel 'cell size h [m]'",
+             "set ylabel 'q_ult [kPa]'", "set xrange [0:0.2]", "set yrange [0:2800]",
              # The biaxial test's resolution: a band independent of the cell from h = l/2 down.
              "set arrow from 0.0425, graph 0 to 0.0425, graph 1 nohead dt 3",
              "set label 'h = l/2' at 0.0445, graph 0.05"]
     kimura = {"V85.6": 1953, "H86.7": 1734}
     for test in ("V85.6", "H86.7"):
         loc = sorted((float(r["cell"]), float(r["q_ult_kPa"])) for r in local if r["test"] == test)
-        reg = sorted((float(r["cell_m"]), float(r["q_ult_kPa"])) for r in every
-                     if r["case"].startswith(test.replace(".", "p")) and r["internal_length_m"] == "default"
-                     and float(r["speed_factor"]) == 1.0 and float(r["cfl"]) == 0.5)
         data = lambda pts: "\n".join(f"{x} {y}" for x, y in pts) + "\ne"
-        lines += [f"set title {gp_quoted(test + ': the largest load against the cell (S/B up to 0.25)')}",
-                  f"plot '-' using 1:2 with linespoints lw 2 pt 7 title 'local (ACST, no internal length)', "
-                  f"'-' using 1:2 with linespoints lw 2 pt 5 title 'regularised, l = 0.085 m (from the grains)', "
+        present = [(title, [(h, q) for h, _, q in reference_runs(test, g, k)]) for g, k, title in series]
+        present = [(title, pts) for title, pts in present if pts]
+        lines += [f"set title {gp_quoted(test + ': the largest load against the cell (S/B up to 0.25; l = 0.085 m)')}",
+                  "plot '-' using 1:2 with linespoints lw 2 pt 7 title 'local (ACST, no internal length)', " +
+                  "".join(f"'-' using 1:2 with linespoints lw 2 pt {5 + i} title {gp_quoted(title)}, "
+                          for i, (title, _) in enumerate(present)) +
                   f"{kimura[test]} with lines dt 2 lc rgb 'black' title 'Kimura et al. (1985)'",
-                  data(loc), data(reg)]
+                  data(loc)] + [data(pts) for _, pts in present]
     lines += ["unset multiplot", ""]
     # Each test's regularised curves at the study's speed and CFL over the centrifuge's.
     for test in ("V85.6", "H86.7"):
-        runs = sorted((float(r["cell_m"]), r["case"]) for r in every if r["case"].startswith(test.replace(".", "p"))
-                      and r["internal_length_m"] == "default" and float(r["speed_factor"]) == 1.0
-                      and float(r["cfl"]) == 0.5)
+        runs = [(h, case, g) for g, k, _ in series[:2] for h, case, _ in reference_runs(test, g, k)]
         if not runs:
             continue
         lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
-        curves = [(f"regularised, h = {h:g} m", read_curve(os.path.join(out, case, "load_settlement.csv"))) for h, case in runs]
+        records = [(h, g, next((p for p in (os.path.join(out, case, n) for n in ("load_settlement.csv", "load_settlement.failed.csv"))
+                                if os.path.exists(p)), None)) for h, case, g in runs]
+        curves = [(f"{g}, h = {h:g} m", read_curve(p)) for h, g, p in records if p]
         curves.append(("Kimura et al. (1985)", read_curve(lab)))
         lines += ["unset arrow", "unset label", "set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, test + '_curves.png'))}",
                   "set grid", "set key top right", "set xlabel 'S/B'", "set ylabel 'q [kPa]'", "set xrange [0:0.25]",
