@@ -219,7 +219,8 @@ def write_table_and_figures(out, rows):
         lines += ["unset arrow", "unset label", "set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, test + '_curves.png'))}",
                   "set grid", "set key top right", "set xlabel 'S/B'", "set ylabel 'q [kPa]'", "set xrange [0:0.25]",
                   "set yrange [0:2600]", f"set title {gp_quoted(test + ': regularised (l = 0.085 m) against the centrifuge')}",
-                  "plot " + ", ".join(f"'-' using 1:2 with lines lw 2 title {gp_quoted(name)}" for name, _ in curves)]
+                  "plot " + ", ".join(f"'-' using 1:2 with lines lw 2 title {gp_quoted(name)}" for name, _ in curves[:-1]) +
+                  f", '-' using 1:2 with points pt 7 ps 0.5 lc rgb 'black' title {gp_quoted(curves[-1][0])}"]
         for _, (S, q) in curves:
             step = max(1, len(S) // 2000)  # a few thousand points draw the curve
             lines.append("\n".join(f"{a} {b}" for a, b in zip(S[::step], q[::step])) + "\ne")
