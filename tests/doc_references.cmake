@@ -1,6 +1,7 @@
 # Every docs/*.md file that a source comment, a CMake file, a study script, a data description or
 # a Markdown file names must exist in the repository, and where the reference names a section
-# (docs/NAME.md, "Section" or 'Section'), NAME.md must have a heading that starts with it
+# (the document's path, a comma and the section in double or single quotes), the document must
+# have a heading that starts with it
 # (cmake -DSOURCE_DIR=... -P doc_references.cmake).
 file(GLOB_RECURSE sources LIST_DIRECTORIES false
   ${SOURCE_DIR}/common/*.hpp ${SOURCE_DIR}/common/*.cpp
@@ -15,19 +16,7 @@ file(GLOB_RECURSE sources LIST_DIRECTORIES false
 list(FILTER sources EXCLUDE REGEX "^${SOURCE_DIR}/(build[^/]*|results|\\.git)/")
 list(FILTER sources EXCLUDE REGEX "/tests/fuzz/corpus/")
 
-# A document's headings, lower case, without Markdown's emphasis and code marks.
-function(headings_of doc out)
-  file(READ ${doc} text)
-  string(REGEX REPLACE "[][;`*]" "" text "${text}")  # CMake lists split on ';' except inside brackets
-  string(REGEX MATCHALL "(^|\n)#+ [^\n]*" found "${text}")
-  set(result "")
-  foreach(h IN LISTS found)
-    string(REGEX REPLACE "^\n?#+ +" "" h "${h}")
-    string(TOLOWER "${h}" h)
-    list(APPEND result "${h}")
-  endforeach()
-  set(${out} "${result}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/markdown_headings.cmake)
 
 set(missing "")
 set(count 0)
@@ -56,7 +45,7 @@ foreach(f ${sources})
     math(EXPR sections "${sections} + 1")
     string(TOLOWER "${section}" section)
     string(STRIP "${section}" section)
-    headings_of(${SOURCE_DIR}/${doc} headings)
+    markdown_headings(${SOURCE_DIR}/${doc} headings)
     set(found FALSE)
     foreach(h IN LISTS headings)
       string(FIND "${h}" "${section}" at)

@@ -7,16 +7,13 @@ cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
 file(GLOB_RECURSE documents LIST_DIRECTORIES false ${SOURCE_DIR}/*.md)
 list(FILTER documents EXCLUDE REGEX "^${SOURCE_DIR}/(build[^/]*|results|\\.git)/")
 
+include(${CMAKE_CURRENT_LIST_DIR}/markdown_headings.cmake)
+
+# The anchors GitHub gives a file's headings.
 function(heading_anchors file out)
-  file(READ ${file} text)
-  # No anchor keeps these, and CMake lists split on ';' except inside square brackets.
-  string(REGEX REPLACE "[][;]" "" text "${text}")
-  string(REGEX MATCHALL "(^|\n)#+ [^\n]*" headings "${text}")
+  markdown_headings(${file} headings)
   set(anchors "")
   foreach(h IN LISTS headings)
-    string(REGEX REPLACE "^\n?#+ +" "" h "${h}")
-    string(STRIP "${h}" h)
-    string(TOLOWER "${h}" h)
     string(REGEX REPLACE "[^a-z0-9 _-]" "" h "${h}")
     string(REPLACE " " "-" h "${h}")
     list(APPEND anchors "${h}")

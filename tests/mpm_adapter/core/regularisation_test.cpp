@@ -39,6 +39,13 @@ double homogeneous_offset(double e, NonlocalKernel kernel) {
   return worst;
 }
 
+// A scene on 0.1 m cells with the delivered ACST set as material "sand"; `rest` is the JSON
+// members after "materials" (bodies, loads, footing, stop, and any extra).
+std::string delivered_sand_scene(const std::string& rest) {
+  const std::string sand = std::string(ACST_SOURCE_DIR) + "/data/parameters/toyoura_acst_calibrated.json";
+  return R"({"name": "t", "grid": {"cell_size": 0.1}, "materials": {"sand": ")" + sand + R"("}, )" + rest + "}";
+}
+
 TEST(Regularisation, AHomogeneousFieldGivesTheLocalResultInEveryBundledElementScene) {
   int scenes = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(ACST_SOURCE_DIR) / "data/scenes/element")) {
@@ -69,13 +76,11 @@ TEST(Regularisation, AHomogeneousFieldGivesTheLocalResultInEveryBundledElementSc
 // A small dense-sand footing run 300 steps with "internal_length_m": 0 against the same scene
 // without the key: the same particles, to the bit.
 TEST(Regularisation, AnInternalLengthOfZeroIsTheLocalModel) {
-  const std::string sand = std::string(ACST_SOURCE_DIR) + "/data/parameters/toyoura_acst_calibrated.json";
-  const auto scene = [&](const std::string& extra) {
-    return R"({"name": "t", "grid": {"cell_size": 0.1}, "materials": {"sand": ")" + sand +
-           R"("}, "bodies": [{"material": "sand", "x_range": [0, 2], "y_range": [0, 1], "density": 1600,
+  const auto scene = [](const std::string& extra) {
+    return delivered_sand_scene(R"("bodies": [{"material": "sand", "x_range": [0, 2], "y_range": [0, 1], "density": 1600,
            "relative_density_pct": 85, "bedding_angle_deg": 0}], "gravity": 9.8,
            "initial_stress": {"type": "geostatic", "K0": 0.4}, "surcharge_kPa": 1,
-           "footing": {"width": 0.4, "centre_x": 1.0, "speed": 0.05}, "stop": {"steps": 300})" + extra + "}";
+           "footing": {"width": 0.4, "centre_x": 1.0, "speed": 0.05}, "stop": {"steps": 300})" + extra);
   };
   Simulation a = mpm_test::build(scene("")), b = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0})"));
   for (int k = 0; k < 300; ++k) a.step(), b.step();
@@ -89,20 +94,17 @@ TEST(Regularisation, AnInternalLengthOfZeroIsTheLocalModel) {
   EXPECT_GT(*std::max_element(d.begin(), d.end()) - *std::min_element(d.begin(), d.end()), 1e-7);
 }
 
-
 // A row of dense sand between smooth walls, a smooth base and a smooth platen over its whole
 // width, compressed in 600 steps: every particle strains alike, so the averaged void ratio is
 // each particle's own and the regularised run, averaging every step, is the local one within
 // 1e-12 (stress, void ratio, fabric and every other state variable).
 TEST(Regularisation, AHomogeneouslyCompressedBlockGivesTheLocalResult) {
-  const std::string sand = std::string(ACST_SOURCE_DIR) + "/data/parameters/toyoura_acst_calibrated.json";
-  const auto scene = [&](const std::string& extra) {
-    return R"({"name": "t", "grid": {"cell_size": 0.1}, "materials": {"sand": ")" + sand +
-           R"("}, "bodies": [{"material": "sand", "x_range": [0, 1.2], "y_range": [0, 0.1], "density": 1600,
+  const auto scene = [](const std::string& extra) {
+    return delivered_sand_scene(R"("bodies": [{"material": "sand", "x_range": [0, 1.2], "y_range": [0, 0.1], "density": 1600,
            "relative_density_pct": 85, "bedding_angle_deg": 30}], "gravity": 0,
            "initial_stress": {"type": "isotropic", "p_kPa": 100}, "walls": {"base": "smooth", "sides": "smooth"},
            "footing": {"width": 1.2, "centre_x": 0.6, "speed": 0.05, "interface": "smooth"},
-           "solver": {"xpic_every": 1}, "stop": {"steps": 600})" + extra + "}";
+           "solver": {"xpic_every": 1}, "stop": {"steps": 600})" + extra);
   };
   Simulation local = mpm_test::build(scene("")),
              nonlocal = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0.2, "every_steps": 1})"));
