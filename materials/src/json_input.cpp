@@ -170,5 +170,26 @@ reference::VonMises von_mises_from_json(const json& j, const std::string& path) 
   return {elastic, yield_stress};
 }
 
+reference::DruckerPrager drucker_prager_from_json(const json& j, const std::string& path) {
+  f::object(j, path);
+  f::allow_keys(j, {"E", "nu", "friction_angle_deg", "cohesion", "dilation_angle_deg"}, path);
+  const reference::LinearElastic elastic = elastic_constants(j, path);
+  // Closed below: phi = 0 is the Tresca-like cylinder, c = 0 a cohesionless cone.
+  auto at_least = [&](const char* key, double lo, double hi, const char* range) {
+    if (!j.contains(key)) throw InputError(path + "/" + key + ": required parameter is missing");
+    const double v = number_at(j, key, path);
+    if (!(v >= lo && v < hi))
+      throw InputError(path + "/" + key + " = " + std::to_string(v) + ": parameter '" + key +
+                       "' is outside its allowed range " + range);
+    return v;
+  };
+  const double phi = at_least("friction_angle_deg", 0.0, 60.0, "[0, 60)");
+  const double c = at_least("cohesion", 0.0, unbounded, "[0, inf)");
+  if (phi == 0.0 && c == 0.0)
+    throw InputError(path + ": friction_angle_deg and cohesion are both zero, a material without strength");
+  const double psi = j.contains("dilation_angle_deg") ? at_least("dilation_angle_deg", 0.0, phi + 1e-12, "[0, friction_angle_deg]") : phi;
+  return reference::drucker_prager_plane_strain(elastic, phi, c, psi);
+}
+
 
 }  // namespace acst

@@ -94,11 +94,18 @@ double wide(acst::fuzz::Bytes& in, double lo_exp, double hi_exp) {
   return sign * magnitude(in, lo_exp, hi_exp);
 }
 
-acst_model* linear_or_von_mises(acst::fuzz::Bytes& in) {
+acst_model* verification_kind(acst::fuzz::Bytes& in) {
   char json[320];
   const double E = magnitude(in, -3.0, 9.0), nu = in.in_range(-0.99, 0.49);
-  if (in.flag()) {
+  const int kind = in.pick(0, 2);
+  if (kind == 0) {
     std::snprintf(json, sizeof json, R"({"model":"linear_elastic","parameters":{"E":%.17g,"nu":%.17g}})", E, nu);
+  } else if (kind == 1) {
+    const double phi = in.in_range(0.0, 59.9), psi = in.in_range(0.0, 1.0) * phi;
+    const double c = in.flag() ? 0.0 : magnitude(in, -3.0, 5.0);
+    std::snprintf(json, sizeof json,
+                  R"({"model":"drucker_prager","parameters":{"E":%.17g,"nu":%.17g,"friction_angle_deg":%.17g,"cohesion":%.17g,"dilation_angle_deg":%.17g}})",
+                  E, nu, phi == 0.0 && c == 0.0 ? 1.0 : phi, c, psi);
   } else {
     const char* key = in.flag() ? "yield_stress" : "undrained_shear_strength";
     std::snprintf(json, sizeof json, R"({"model":"von_mises","parameters":{"E":%.17g,"nu":%.17g,"%s":%.17g}})", E, nu,
@@ -271,7 +278,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   acst::fuzz::Bytes in(data, size);
   const int n_sand = static_cast<int>(bundled.sand.size());
   const int pick = in.pick(0, n_sand);  // n_sand: a verification kind
-  acst_model* own = pick == n_sand ? linear_or_von_mises(in) : nullptr;
+  acst_model* own = pick == n_sand ? verification_kind(in) : nullptr;
   const acst_model* m = own ? own : bundled.sand[pick];
   const bool sand = own == nullptr;
   Point p;

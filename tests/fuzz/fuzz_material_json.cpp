@@ -31,6 +31,10 @@ bool cpp_accepts(const std::string& text) {
       acst::von_mises_from_json(doc["parameters"], "/parameters");
       return !doc.contains("integrator");
     }
+    if (model == "drucker_prager") {
+      acst::drucker_prager_from_json(doc["parameters"], "/parameters");
+      return !doc.contains("integrator");
+    }
     acst::material_from_document(doc);
     return true;
   } catch (const acst::common::InputError&) {

@@ -82,6 +82,24 @@ inline double prandtl_q_rigid_plastic(double h, const std::string& interface) {
                 0.01);
 }
 
+// Weightless Drucker-Prager soil matched to Mohr-Coulomb in plane strain (phi = psi = 30 deg,
+// c = 10 kPa, E = 10^4 c) under a rough footing (B = 1 m) at the Kimura scenes' 0.045 m/s, on the
+// right half of the Kimura footing's 14 B x 7 B domain with its graded grid (3 B window):
+// Prandtl's mechanism for phi = 30 reaches 4.8 B from the centre and 1.9 B deep. q = V/B averaged
+// over S/B 0.03-0.06, past collapse (by S/B 0.02), against c N_c = 301.4 kPa
+// (bench/studies/footing_frictional.py runs the Kimura footing itself, B = 0.9 m).
+inline double frictional_prandtl_q(double h) {
+  const std::string scene = R"({"name": "frictional_prandtl", "grid": {"cell_size": )" + std::to_string(h) + R"(, "graded": {}},
+    "materials": {"sand": {"model": "drucker_prager", "parameters": {"E": 100000, "nu": 0.3, "friction_angle_deg": 30, "cohesion": 10}}},
+    "bodies": [{"material": "sand", "x_range": [0, 14], "y_range": [0, 7], "density": 1600}],
+    "footing": {"width": 1.0, "centre_x": 7.0, "speed": 0.045, "interface": "rough", "symmetric_half": true},
+    "solver": {"grid_damping": 0.5, "particle_update": "XPIC", "xpic_order": 4, "xpic_every": 20},
+    "stop": {"S_over_B": 0.06}})";
+  acst::mpm::Simulation s = build(scene);
+  return mean_q(run(s, 20, [](const acst::mpm::Simulation& x) { return x.footing().settlement() >= 0.06; }), 1.0, 0.03,
+                0.06);
+}
+
 // The largest change between the mean q of adjacent windows of 0.005 B ending between S/B 0.03 and
 // 0.07 (B = 1 m), where with fixed rows at h = B/10 the first node row joins a node-row footing.
 inline double largest_window_change(const std::vector<Period>& rows) {

@@ -1,5 +1,5 @@
 /* acst.h: C ABI of the ACST sand model library (anisotropic critical state theory,
- * Li & Dafalias 2012, multiaxial form of Gao et al. 2014) and its isotropic reduction, with two
+ * Li & Dafalias 2012, multiaxial form of Gao et al. 2014) and its isotropic reduction, with three
  * closed-form verification materials behind the same handle.
  *
  * MODEL KINDS ("model" in the JSON of acst_model_create; acst_model_kind tells them apart):
@@ -9,7 +9,11 @@
  *   "von_mises": perfectly plastic, associated, radial return; {"E", "nu", and exactly one of
  *       "yield_stress" (sigma_y, kPa > 0) or "undrained_shear_strength" (s_u, kPa > 0, sigma_y =
  *       sqrt(3) s_u: max shear s_u in plane strain)}; 1 state variable, equivalent_plastic_strain.
- *   The two verification kinds take no "integrator" key.
+ *   "drucker_prager": perfectly plastic cone matched to Mohr-Coulomb in plane strain, return
+ *       onto the cone or its apex; {"E", "nu", "friction_angle_deg" (phi in [0, 60)), "cohesion"
+ *       (c, kPa >= 0; not both zero), optional "dilation_angle_deg" (psi in [0, phi], default
+ *       phi: associated)}; 1 state variable, equivalent_plastic_strain.
+ *   The three verification kinds take no "integrator" key.
  *
  * CONVENTION AT THIS INTERFACE (the Abaqus UMAT convention; the C++ API differs):
  *   - Voigt order 11, 22, 33, 12, 13, 23;
@@ -74,13 +78,13 @@ typedef struct acst_counters {
 #define ACST_NDIAGNOSTICS 13
 
 /* Creates a model from JSON text:
- *   {"model": "ACST"|"isotropic"|"linear_elastic"|"von_mises", "parameters": {...}, "integrator": {...}}
+ *   {"model": "ACST"|"isotropic"|"linear_elastic"|"von_mises"|"drucker_prager", "parameters": {...}, "integrator": {...}}
  * (see docs/c-abi.md; "model" defaults to "ACST"). On failure *model is NULL and the message
  * names the JSON path and the allowed range. */
 acst_status acst_model_create(acst_model** model, const char* json_text);
 void acst_model_destroy(acst_model* model);
 
-/* "ACST", "isotropic", "linear_elastic" or "von_mises" (NULL for a NULL handle). */
+/* "ACST", "isotropic", "linear_elastic", "von_mises" or "drucker_prager" (NULL for a NULL handle). */
 const char* acst_model_kind(const acst_model* model);
 
 /* Number of state variables of this model (10, 0 or 1; 0 for a NULL handle) and the name of
@@ -91,8 +95,8 @@ const char* acst_state_name(const acst_model* model, int i);
 /* Initial stress (this interface's convention) and state from a stress, a void ratio and the
  * deposition direction (normal to the bedding planes, any non-zero length).
  * stress_out may alias stress0. The verification kinds copy the stress, zero the state and ignore
- * void ratio and direction (which may be NULL); von_mises gives ACST_NONPHYSICAL_STATE for a
- * stress outside its yield surface (relative tolerance 1e-9). */
+ * void ratio and direction (which may be NULL); von_mises and drucker_prager give
+ * ACST_NONPHYSICAL_STATE for a stress outside their yield surface (relative tolerance 1e-9). */
 acst_status acst_initial_state(double* statev, double* stress_out, const acst_model* model, const double* stress0,
                                double void_ratio, const double* deposition_direction);
 
@@ -111,8 +115,8 @@ acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst
 /* One stress update: stress[6] and statev[acst_state_size] in and out, dstrain[6] in.
  * tangent (36 doubles) and counters are optional (NULL). On any failure stress and statev are
  * left unchanged. The verification kinds return the elastic matrix or the consistent
- * elastoplastic tangent of the radial return, and zero counters except plastic (1 if von_mises
- * yielded). Hosts with large rotations call acst_rotate_state first, or acst_update_rotated. */
+ * elastoplastic tangent of the return, and zero counters except plastic (1 if von_mises or
+ * drucker_prager yielded). Hosts with large rotations call acst_rotate_state first, or acst_update_rotated. */
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain);
 
@@ -181,7 +185,7 @@ acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, doub
  *       increment's own volume change), but no looser than critical (psi + offset > 0) unless
  *       the point is looser itself: min(psi + offset, max(psi, 0)); the elasticity and the
  *       hardening keep e.
- *   linear_elastic, von_mises: none (nothing softens); an offset argument is ignored.
+ *   linear_elastic, von_mises, drucker_prager: none (nothing softens); an offset argument is ignored.
  * acst_nonlocal_size: the number of quantities (0 or 1; 0 for a NULL handle); acst_nonlocal_name
  * their names (NULL out of range); acst_nonlocal_local: a point's local values (acst_nonlocal_size
  * doubles) from its stress and state, which must be finite. */

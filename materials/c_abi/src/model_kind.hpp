@@ -81,5 +81,6 @@ std::unique_ptr<const ModelKind> make_model_kind(const std::string& json_text);
 std::unique_ptr<const ModelKind> make_sand_kind(const nlohmann::json& document);
 std::unique_ptr<const ModelKind> make_linear_elastic_kind(const nlohmann::json& document);
 std::unique_ptr<const ModelKind> make_von_mises_kind(const nlohmann::json& document);
+std::unique_ptr<const ModelKind> make_drucker_prager_kind(const nlohmann::json& document);
 
 }  // namespace acst::abi

@@ -25,6 +25,7 @@ constexpr Registration kinds[] = {
     {"isotropic", true, make_sand_kind},
     {"linear_elastic", false, make_linear_elastic_kind},
     {"von_mises", false, make_von_mises_kind},
+    {"drucker_prager", false, make_drucker_prager_kind},
 };
 
 std::string allowed_models() {

@@ -6,6 +6,7 @@
 #include "acst/integration/options.hpp"
 #include "acst/material.hpp"
 #include "acst/parameters.hpp"
+#include "acst/reference/drucker_prager.hpp"
 #include "acst/reference/linear_elastic.hpp"
 #include "acst/reference/von_mises.hpp"
 
@@ -27,6 +28,11 @@ reference::LinearElastic linear_elastic_from_json(const nlohmann::json& j, const
 // {"E", "nu", and exactly one of "yield_stress" (sigma_y) or "undrained_shear_strength" (s_u,
 // sigma_y = sqrt(3) s_u)}, both kPa > 0; unknown keys rejected.
 reference::VonMises von_mises_from_json(const nlohmann::json& j, const std::string& path);
+
+// {"E", "nu", "friction_angle_deg" (phi in [0, 60)), "cohesion" (c, kPa >= 0, not both zero),
+// "dilation_angle_deg" (psi in [0, phi], default phi: associated)}: the cone matched to
+// Mohr-Coulomb in plane strain; unknown keys rejected.
+reference::DruckerPrager drucker_prager_from_json(const nlohmann::json& j, const std::string& path);
 
 // A material document {"model", "parameters", "integrator"} parsed and its keys checked
 // (unknown keys rejected, "parameters" required); the values are each model kind's to read.

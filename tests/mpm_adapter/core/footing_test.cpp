@@ -1,7 +1,8 @@
 // The contact footing (docs/mpm.md, "The footing") against closed forms: the rigid plate on a
 // confined elastic layer, Prandtl's bearing capacity on weightless Tresca soil (rough and smooth,
-// converging with the cell), a load that rises smoothly through cell crossings, no tension and no load once
-// separated, Coulomb friction capping the horizontal load, and no moment under a centred footing.
+// converging with the cell) and on weightless frictional (Drucker-Prager) soil, a load that rises
+// smoothly through cell crossings, no tension and no load once separated, Coulomb friction
+// capping the horizontal load, and no moment under a centred footing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -109,6 +110,23 @@ TEST(FootingContact, PrandtlBearingCapacityOnTrescaSoilConvergesFromAbove) {
   EXPECT_LT(fine, 1.11 * prandtl) << "q " << fine << " kPa at h = B/20";
   EXPECT_LT(fine - prandtl, 0.7 * (coarse - prandtl)) << "q " << coarse << " at h = B/10, " << fine << " at B/20";
   EXPECT_NEAR(2 * fine - coarse, prandtl, 0.05 * prandtl) << "q " << coarse << " at h = B/10, " << fine << " at B/20";
+}
+
+// The same on a frictional, dilating soil: Drucker-Prager matched to Mohr-Coulomb, associated,
+// weightless, whose limit load is Prandtl's c N_c, N_c = (exp(pi tan phi) tan^2(45 + phi/2) - 1)
+// cot phi. On the Kimura footing the error is +12.4 % at B/10 and +6.6 % at B/15
+// (bench/results/footing_frictional/).
+TEST(FootingContact, PrandtlBearingCapacityOnFrictionalSoilConvergesFromAbove) {
+  const double phi = 30.0 * pi / 180.0, t = std::tan(phi);
+  const double N_q = std::exp(pi * t) * std::pow(std::tan(pi / 4 + phi / 2), 2);
+  const double closed = 10.0 * (N_q - 1.0) / t;  // 301.4 kPa
+  const double coarse = mpm_test::frictional_prandtl_q(0.1), fine = mpm_test::frictional_prandtl_q(0.07);
+  RecordProperty("q_B10_kPa", std::to_string(coarse));
+  RecordProperty("q_B14_kPa", std::to_string(fine));
+  EXPECT_GT(coarse, closed);
+  EXPECT_LT(coarse, 1.2 * closed) << "q " << coarse << " kPa at h = B/10, c N_c = " << closed;
+  EXPECT_GT(fine, closed);
+  EXPECT_LT(fine - closed, 0.8 * (coarse - closed)) << "q " << coarse << " at h = B/10, " << fine << " at B/14.3";
 }
 
 TEST(FootingContact, NoTensionAndNoLoadOnceSeparated) {

@@ -1,0 +1,82 @@
+// Perfectly plastic Drucker-Prager behind the C ABI (a frictional verification kind, matched to
+// Mohr-Coulomb in plane strain): return onto the cone or its apex, one state variable (the
+// equivalent plastic strain).
+#include <cmath>
+#include <string>
+
+#include "abi_convention.hpp"
+#include "acst/json_input.hpp"
+#include "acst/reference/drucker_prager.hpp"
+#include "c_abi_support.hpp"
+#include "model_kind.hpp"
+
+namespace acst::abi {
+
+namespace {
+
+constexpr const char* state_names[] = {"equivalent_plastic_strain"};
+constexpr StateLayout layout{state_names, 1, nullptr, 0};
+
+class DruckerPragerKind final : public ModelKind {
+ public:
+  explicit DruckerPragerKind(reference::DruckerPrager m) : m_(m) {}
+
+  const char* name() const override { return "drucker_prager"; }
+  const StateLayout& state() const override { return layout; }
+
+  acst_status initial_state(double* statev, double* stress_out, const double* stress0, double,
+                            const double*) const override {
+    const Sym s = stress_to_model(stress0);
+    if (!s.allFinite()) return make_status(ACST_INVALID_INPUT, "acst_initial_state: initial stress is not finite", 1.0);
+    if (!reference::within_yield_surface(m_, s))
+      return make_status(ACST_NONPHYSICAL_STATE,
+                         "acst_initial_state: initial stress lies outside the Drucker-Prager cone (sqrt(J2) = " +
+                             std::to_string(reference::sqrt_J2(s)) + " kPa > " +
+                             std::to_string(m_.k + m_.alpha * trace(s)) + " kPa at p = " +
+                             std::to_string(trace(s) / 3.0) + " kPa, compression positive)",
+                         1.0);
+    statev[0] = 0.0;
+    stress_from_model(s, stress_out);
+    return ok_status();
+  }
+
+  acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
+                     const double* /* nothing softens */, integration::Report& rep) const override {
+    reference::DruckerPragerPoint point{stress_to_model(stress), statev[0]};
+    const Sym deps = strain_to_model(dstrain);
+    const bool state_ok = std::isfinite(point.equivalent_plastic_strain) && point.equivalent_plastic_strain >= 0.0;
+    if (!entry_ok(point.stress, state_ok, deps, rep)) return status_from_report(rep);
+    Mat6 D;
+    rep.plastic = reference::radial_return(m_, point, deps, tangent ? &D : nullptr);
+    if (!point.stress.allFinite() || !std::isfinite(point.equivalent_plastic_strain) || (tangent && !D.allFinite()))
+      return nonfinite_result("the stress, plastic strain or tangent");
+    stress_from_model(point.stress, stress);
+    statev[0] = point.equivalent_plastic_strain;
+    if (tangent) tangent_from_model(D, tangent);
+    return ok_status();
+  }
+
+  std::string state_problem(const double* stress, const double* statev) const override {
+    if (const std::string p = ModelKind::state_problem(stress, statev); !p.empty()) return p;
+    return statev[0] >= 0.0 ? "" : "the equivalent plastic strain is negative";
+  }
+
+  ElasticModuli moduli(const double*, const double*) const override { return reference::moduli(m_.elastic); }
+
+  void diagnostics(double* out, const double* stress, const double*) const override {
+    reference_diagnostics(out, stress_to_model(stress), reference::moduli(m_.elastic));
+  }
+
+  bool diagnostic_applies(int i) const override { return reference_diagnostic(i); }
+
+ private:
+  reference::DruckerPrager m_;
+};
+
+}  // namespace
+
+std::unique_ptr<const ModelKind> make_drucker_prager_kind(const nlohmann::json& document) {
+  return std::make_unique<DruckerPragerKind>(drucker_prager_from_json(document["parameters"], "/parameters"));
+}
+
+}  // namespace acst::abi
