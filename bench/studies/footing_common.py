@@ -96,3 +96,26 @@ def plot_beside_kimura(png, panels, stop_s_over_b, key="bottom right"):
         lines += [f"set title {gp_quoted(title)}", "plot " + ", ".join(plots)]
     lines += ["unset multiplot", ""]
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
+
+
+def run_case(tool, out, name, scene):
+    """Runs acst_mpm on `scene` into OUT/NAME (the scene written to OUT/scenes/NAME.json first),
+    unless OUT/NAME/summary.json exists. Returns the case's folder and None, or the folder and
+    the failure's text."""
+    run_dir = os.path.join(out, name)
+    if os.path.exists(os.path.join(run_dir, "summary.json")):
+        return run_dir, None
+    os.makedirs(os.path.join(out, "scenes"), exist_ok=True)
+    path = os.path.join(out, "scenes", name + ".json")
+    with open(path, "w") as f:
+        json.dump(scene, f, indent=1)
+    run = subprocess.run([tool, "--quiet", "--output", run_dir, path], capture_output=True, text=True)
+    return run_dir, None if run.returncode == 0 else "failed: " + run.stderr.strip()[:200]
+
+
+def old_rows(path, rows):
+    """The rows of the CSV at path (if any) whose case is not among rows' (they are replaced)."""
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [r for r in csv.DictReader(f) if r["case"] not in {x["case"] for x in rows}]

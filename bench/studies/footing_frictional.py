@@ -21,14 +21,13 @@ OUT/q_against_h.png. A case whose summary.json exists is not run again.
         (above: the grid's cells above the soil, for the heave; the scene's 6 unless given)
 """
 import argparse
-import csv
 import json
 import math
 import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_paths, write_table
+from footing_common import ROOT, gp_quoted, old_rows, read_curve, run_case, scene_with_absolute_paths, write_table
 
 BASE = os.path.join(ROOT, "data", "scenes", "mpm", "convergence", "kimura_V85.6_alpha0_h0045.json")
 FIELDS = ["case", "grid", "cell_m", "friction_angle_deg", "dilation_angle_deg", "cohesion_kPa", "E_kPa",
@@ -94,22 +93,15 @@ def main():
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
-    os.makedirs(os.path.join(a.out, "scenes"), exist_ok=True)
     rows = []
     for text in a.cases:
         c = parse_case(text)
-        run_dir = os.path.join(a.out, c["name"])
-        summary_file = os.path.join(run_dir, "summary.json")
-        if not os.path.exists(summary_file):
-            path = os.path.join(a.out, "scenes", c["name"] + ".json")
-            with open(path, "w") as f:
-                json.dump(scene_of(c, a.stop, a.threads), f, indent=1)
-            run = subprocess.run([a.tool, "--quiet", "--output", run_dir, path], capture_output=True, text=True)
-            if run.returncode != 0:
-                rows.append({"case": c["name"], "cell_m": c["h"], "status": "failed: " + run.stderr.strip()[:200]})
-                print(json.dumps(rows[-1]), flush=True)
-                continue
-        with open(summary_file) as f:
+        run_dir, failure = run_case(a.tool, a.out, c["name"], scene_of(c, a.stop, a.threads))
+        if failure:
+            rows.append({"case": c["name"], "cell_m": c["h"], "status": failure})
+            print(json.dumps(rows[-1]), flush=True)
+            continue
+        with open(os.path.join(run_dir, "summary.json")) as f:
             summary = json.load(f)
         S, q = read_curve(os.path.join(run_dir, "load_settlement.csv"))
         closed = c["c"] * prandtl_nc(c["phi"]) if c["psi"] == c["phi"] else None  # Prandtl's needs associated flow
@@ -121,11 +113,7 @@ def main():
                      "wall_s": round(summary["wall_s"], 1), "status": "done", "curve": (S, q)})
         print(json.dumps({k: v for k, v in rows[-1].items() if k != "curve"}), flush=True)
     table = os.path.join(a.out, "frictional.csv")
-    old = []
-    if os.path.exists(table):
-        with open(table) as f:
-            old = [r for r in csv.DictReader(f) if r["case"] not in {x["case"] for x in rows}]
-    write_table(table, FIELDS, old + rows)
+    write_table(table, FIELDS, old_rows(table, rows) + rows)
     plot(a.out, rows)
 
 
@@ -149,6 +137,10 @@ def plot(out, rows):
                      and r["grid"] == "graded" and r["error_pct"] != "")
         if pts:
             series.append((f"associated, phi = {phi:g} deg, graded grid", "\n".join(f"{h},{e}" for h, e in pts) + "\ne"))
+    if not series:  # no graded, associated run to chart against c N_c: the curves alone
+        lines[3] = "set multiplot layout 1,1"
+        subprocess.run(["gnuplot"], input="\n".join(lines + ["unset multiplot", ""]), text=True, check=False)
+        return
     lines += ["set xlabel 'cell size h [m]'", "set ylabel 'q over S/B 0.03-0.06 against c N_c [%]'", "set xrange [0:0.1]",
               "set yrange [0:*]", "set key top left", "set title 'The method''s error against Prandtl'",
               "plot " + ", ".join(f"'-' using 1:2 with linespoints pt 7 lw 2 title {gp_quoted(t)}" for t, _ in series)]

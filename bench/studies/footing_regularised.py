@@ -25,7 +25,7 @@ import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, read_curve, scene_with_absolute_paths
+from footing_common import ROOT, gp_quoted, old_rows, read_curve, run_case, scene_with_absolute_paths, write_table
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm", "convergence")
 BASE = {"V85.6": "kimura_V85.6_alpha0_h0045.json", "H86.7": "kimura_H86.7_alpha90_h0045.json"}
@@ -121,15 +121,11 @@ def main():
                              "S_ult_over_B": round(S[k], 4), "q_at_SB0.1_kPa": round(interpolate(S, q, 0.1), 1),
                              "final_S_over_B": round(S[-1], 4), "status": f"stopped at S/B {S[-1]:.3f} (load_settlement.failed.csv)"})
             continue
-        if not os.path.exists(summary_file):
-            path = os.path.join(a.out, "scenes", c["name"] + ".json")
-            with open(path, "w") as f:
-                json.dump(scene_of(c, a.stop, a.threads), f, indent=1)
-            run = subprocess.run([a.tool, "--quiet", "--output", run_dir, path], capture_output=True, text=True)
-            if run.returncode != 0:
-                rows.append({"case": c["name"], "cell_m": c["h"], "status": "failed: " + run.stderr.strip()[:200]})
-                print(json.dumps(rows[-1]), flush=True)
-                continue
+        _, failure = run_case(a.tool, a.out, c["name"], scene_of(c, a.stop, a.threads))
+        if failure:
+            rows.append({"case": c["name"], "cell_m": c["h"], "status": failure})
+            print(json.dumps(rows[-1]), flush=True)
+            continue
         with open(summary_file) as f:
             s = json.load(f)
         S, q = read_curve(os.path.join(run_dir, "load_settlement.csv"))
@@ -153,10 +149,7 @@ LOCAL = os.path.join(ROOT, "bench", "results", "footing_convergence", "convergen
 
 def write_table_and_figures(out, rows):
     table = os.path.join(out, "convergence.csv")
-    old = []
-    if os.path.exists(table):
-        with open(table) as f:
-            old = [r for r in csv.DictReader(f) if r["case"] not in {x["case"] for x in rows}]
+    old = old_rows(table, rows)
     # The local model's rows are its cell-size study's (bench/results/footing_convergence/: the same
     # scenes, speed and CFL, and the same numbers as today's local code), not run again.
     with open(LOCAL) as f:
@@ -166,10 +159,7 @@ def write_table_and_figures(out, rows):
                    "q_first_peak_kPa": r["q_first_peak_kPa"], "S_first_peak_over_B": r["S_first_peak_over_B"],
                    "status": "done (bench/results/footing_convergence, to S/B 0.5)"} for r in local]
     old = [r for r in old if not r["status"].startswith("done (")]
-    with open(table, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=FIELDS, extrasaction="ignore")
-        w.writeheader()
-        w.writerows(old + rows + local_rows)
+    write_table(table, FIELDS, old + rows + local_rows)
     with open(table) as f:
         every = [r for r in csv.DictReader(f) if r["status"] == "done" or r["status"].startswith("stopped")]
     for r in every:  # rows of tables written before the grid and set columns

@@ -1,12 +1,14 @@
-// Perfectly plastic Drucker-Prager behind the C ABI (a frictional verification kind, matched to
-// Mohr-Coulomb in plane strain): return onto the cone or its apex, one state variable (the
-// equivalent plastic strain).
+// The perfectly plastic verification kinds behind the C ABI: von Mises (radial return) and
+// Drucker-Prager matched to Mohr-Coulomb in plane strain (return onto the cone or its apex).
+// Both carry one state variable, the equivalent plastic strain, and differ only in the model,
+// its return and what they say of an initial stress outside the surface.
 #include <cmath>
 #include <string>
 
 #include "abi_convention.hpp"
 #include "acst/json_input.hpp"
 #include "acst/reference/drucker_prager.hpp"
+#include "acst/reference/von_mises.hpp"
 #include "c_abi_support.hpp"
 #include "model_kind.hpp"
 
@@ -17,11 +19,15 @@ namespace {
 constexpr const char* state_names[] = {"equivalent_plastic_strain"};
 constexpr StateLayout layout{state_names, 1, nullptr, 0};
 
-class DruckerPragerKind final : public ModelKind {
+template <class Model, class Point>
+class PerfectlyPlasticKind final : public ModelKind {
  public:
-  explicit DruckerPragerKind(reference::DruckerPrager m) : m_(m) {}
+  // What the kind says of an initial stress outside its surface, after "acst_initial_state: ".
+  using OutsideMessage = std::string (*)(const Model&, const Sym&);
 
-  const char* name() const override { return "drucker_prager"; }
+  PerfectlyPlasticKind(const char* name, Model m, OutsideMessage outside) : name_(name), m_(m), outside_(outside) {}
+
+  const char* name() const override { return name_; }
   const StateLayout& state() const override { return layout; }
 
   acst_status initial_state(double* statev, double* stress_out, const double* stress0, double,
@@ -29,12 +35,7 @@ class DruckerPragerKind final : public ModelKind {
     const Sym s = stress_to_model(stress0);
     if (!s.allFinite()) return make_status(ACST_INVALID_INPUT, "acst_initial_state: initial stress is not finite", 1.0);
     if (!reference::within_yield_surface(m_, s))
-      return make_status(ACST_NONPHYSICAL_STATE,
-                         "acst_initial_state: initial stress lies outside the Drucker-Prager cone (sqrt(J2) = " +
-                             std::to_string(reference::sqrt_J2(s)) + " kPa > " +
-                             std::to_string(m_.k + m_.alpha * trace(s)) + " kPa at p = " +
-                             std::to_string(trace(s) / 3.0) + " kPa, compression positive)",
-                         1.0);
+      return make_status(ACST_NONPHYSICAL_STATE, "acst_initial_state: " + outside_(m_, s), 1.0);
     statev[0] = 0.0;
     stress_from_model(s, stress_out);
     return ok_status();
@@ -42,7 +43,7 @@ class DruckerPragerKind final : public ModelKind {
 
   acst_status update(double* stress, double* statev, double* tangent, const double* dstrain,
                      const double* /* nothing softens */, integration::Report& rep) const override {
-    reference::DruckerPragerPoint point{stress_to_model(stress), statev[0]};
+    Point point{stress_to_model(stress), statev[0]};
     const Sym deps = strain_to_model(dstrain);
     const bool state_ok = std::isfinite(point.equivalent_plastic_strain) && point.equivalent_plastic_strain >= 0.0;
     if (!entry_ok(point.stress, state_ok, deps, rep)) return status_from_report(rep);
@@ -70,13 +71,33 @@ class DruckerPragerKind final : public ModelKind {
   bool diagnostic_applies(int i) const override { return reference_diagnostic(i); }
 
  private:
-  reference::DruckerPrager m_;
+  const char* name_;
+  Model m_;
+  OutsideMessage outside_;
 };
+
+std::string outside_von_mises(const reference::VonMises& m, const Sym& s) {
+  return "initial stress lies outside the von Mises yield surface (q = " +
+         std::to_string(reference::equivalent_stress(s)) + " kPa > yield_stress = " + std::to_string(m.yield_stress) +
+         " kPa)";
+}
+
+std::string outside_drucker_prager(const reference::DruckerPrager& m, const Sym& s) {
+  return "initial stress lies outside the Drucker-Prager cone (sqrt(J2) = " + std::to_string(reference::sqrt_J2(s)) +
+         " kPa > " + std::to_string(m.k + m.alpha * trace(s)) + " kPa at p = " + std::to_string(trace(s) / 3.0) +
+         " kPa, compression positive)";
+}
 
 }  // namespace
 
+std::unique_ptr<const ModelKind> make_von_mises_kind(const nlohmann::json& document) {
+  return std::make_unique<PerfectlyPlasticKind<reference::VonMises, reference::VonMisesPoint>>(
+      "von_mises", von_mises_from_json(document["parameters"], "/parameters"), outside_von_mises);
+}
+
 std::unique_ptr<const ModelKind> make_drucker_prager_kind(const nlohmann::json& document) {
-  return std::make_unique<DruckerPragerKind>(drucker_prager_from_json(document["parameters"], "/parameters"));
+  return std::make_unique<PerfectlyPlasticKind<reference::DruckerPrager, reference::DruckerPragerPoint>>(
+      "drucker_prager", drucker_prager_from_json(document["parameters"], "/parameters"), outside_drucker_prager);
 }
 
 }  // namespace acst::abi
