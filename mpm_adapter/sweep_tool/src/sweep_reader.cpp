@@ -195,6 +195,28 @@ void set_at_pointer(json& scene, const std::string& pointer, const json& value, 
 
 namespace {
 
+KeepSpec read_keep(const json& k, const std::string& p) {
+  f::allow_keys(k, {"maps", "rows", "map_cell_over_B", "map_window_over_B"}, p);
+  KeepSpec keep;
+  if (k.contains("maps")) {
+    if (!k["maps"].is_array()) f::fail(p + "/maps", "expected an array of map names (FIELD_SB0.500, FIELD_peak)");
+    for (std::size_t i = 0; i < k["maps"].size(); ++i) {
+      const std::string q = p + "/maps/" + std::to_string(i);
+      keep.maps.push_back(common::require_plain_stem(f::string(k["maps"][i], q), q));
+    }
+  }
+  if (k.contains("rows")) keep.rows = static_cast<std::size_t>(f::integer(k["rows"], p + "/rows", 2, 1000000));
+  if (k.contains("map_cell_over_B"))
+    keep.map_cell_over_B = f::number(k["map_cell_over_B"], p + "/map_cell_over_B", {0.005, 1.0, false, false});
+  if (k.contains("map_window_over_B")) {
+    const std::vector<double> w = f::numbers(k["map_window_over_B"], p + "/map_window_over_B", 2, "width and depth in B");
+    for (std::size_t i = 0; i < 2; ++i)
+      f::number(k["map_window_over_B"][i], p + "/map_window_over_B/" + std::to_string(i), {0.1, 100.0, false, false});
+    keep.map_width_over_B = w[0], keep.map_depth_over_B = w[1];
+  }
+  return keep;
+}
+
 SweepSpec sweep_from_document(const json& j, const std::string& file, const std::string& extra_set) {
   f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings"}, "");
   SweepSpec s;
@@ -205,7 +227,8 @@ SweepSpec sweep_from_document(const json& j, const std::string& file, const std:
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
   if (j.contains("gather")) {
     const json& g = j["gather"];
-    f::allow_keys(g, {"load_at_S_over_B", "figures", "case_figures"}, "/gather");
+    f::allow_keys(g, {"load_at_S_over_B", "figures", "case_figures", "keep"}, "/gather");
+    if (g.contains("keep")) s.keep = read_keep(g["keep"], "/gather/keep");
     if (g.contains("case_figures")) {
       const json& c = g["case_figures"];
       if (!c.is_array()) f::fail("/gather/case_figures", "expected an array of file names of a case's folder");

@@ -17,6 +17,7 @@
 #include "acst_footing_tool/build_simulation.hpp"
 #include "acst_footing_tool/scene_size.hpp"
 #include "acst_sweep/case_record.hpp"
+#include "acst_sweep/kept_results.hpp"
 #include "acst_sweep/sweep_case.hpp"
 #include "acst_sweep/sweep_table.hpp"
 
@@ -219,6 +220,9 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
   });
   if (sweep.figures && opt.plot)
     for (const std::string& w : write_group_figures(sweep, plan.rows, opt.output_dir)) warnings.push_back(w);
+  if (sweep.keep)
+    for (const SweepCase& c : sweep.cases)
+      for (const std::string& w : keep_case_results(*sweep.keep, c, opt.output_dir)) warnings.push_back(w);
   try {
     gather(sweep, plan.rows, opt);  // the report links the figures now there
   } catch (const std::exception& e) {

@@ -9,6 +9,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
 #include "acst_common/one_line.hpp"
+#include "acst_sweep/kept_results.hpp"
 #include "acst_sweep/sweep_case.hpp"
 
 namespace acst::mpm {
@@ -72,7 +73,7 @@ std::string markdown_table(const std::vector<ordered_json>& rows) {
 }  // namespace
 
 bool is_sweep_output_name(const std::string& name) {
-  static const std::set<std::string> own{sweep_cases_folder, "figures",    "table.csv", "table.md",
+  static const std::set<std::string> own{sweep_cases_folder, sweep_kept_folder, "figures", "table.csv", "table.md",
                                          "table.json",       "sweep.json", "report.md", sweep_lock_file};
   return own.count(name) > 0 || common::is_temporary_name(name);
 }

@@ -20,6 +20,7 @@
 #include "acst_common/input_error.hpp"
 #include "acst_footing_tool/fields.hpp"
 #include "acst_footing_tool/first_peak.hpp"
+#include "acst_sweep/kept_results.hpp"
 #include "acst_sweep/sweep.hpp"
 #include "acst_sweep/sweep_case.hpp"
 #include "acst_sweep/sweep_runner.hpp"
@@ -529,4 +530,127 @@ TEST(FirstPeak, NoneWhileTheLoadRisesOrWithinAWindowOfTheEnd) {
   const auto late = sampled({{0.0, 0.0}, {0.195, 2000.0}, {0.2, 1900.0}});
   EXPECT_FALSE(acst::mpm::first_peak(late.first, late.second).has_value());
   EXPECT_FALSE(acst::mpm::first_peak({}, {}).has_value());
+}
+
+namespace {
+
+// The data rows of a CSV text (comment lines and the header left out).
+std::vector<std::string> data_rows(const std::string& text) {
+  std::vector<std::string> rows;
+  std::istringstream in(text);
+  bool header = true;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    rows.push_back(line);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST(KeptResults, ARecordIsThinnedToItsRowsWithItsEndsAndPeak) {
+  std::string text = "# a comment\nS_over_B,q_kPa\n";
+  for (int i = 0; i < 1000; ++i) text += std::to_string(i) + "," + std::to_string(i == 617 ? 5000 : i) + "\n";
+  const std::string thin = decimated_csv(text, 250, "q_kPa");
+  EXPECT_EQ(thin.rfind("# a comment\nS_over_B,q_kPa\n", 0), 0u);
+  const std::vector<std::string> rows = data_rows(thin);
+  ASSERT_GE(rows.size(), 250u);
+  EXPECT_LE(rows.size(), 251u);  // the peak may fall between two evenly spread rows
+  EXPECT_EQ(rows.front(), "0,0");
+  EXPECT_EQ(rows.back(), "999,999");
+  EXPECT_NE(std::find(rows.begin(), rows.end(), "617,5000"), rows.end());
+  // Evenly spread: no gap of more than two of the 999 / 249 steps between kept rows.
+  for (std::size_t k = 1; k < rows.size(); ++k)
+    EXPECT_LE(std::stoi(rows[k]) - std::stoi(rows[k - 1]), 5) << rows[k];
+  // A record within the budget is kept whole.
+  EXPECT_EQ(decimated_csv("a,b\n1,2\n3,4\n", 250, "b"), "a,b\n1,2\n3,4\n");
+}
+
+TEST(KeptResults, AMapIsAveragedOnCellsOfItsWindow) {
+  // Four particles in the cell [0, 0.5) x [0, 0.5), one in [0.5, 1) x [0, 0.5), one outside.
+  const std::string map = "x_m,y_m,value\n0.1,0.1,1\n0.2,0.3,2\n0.4,0.4,3\n0.3,0.1,6\n0.7,0.2,-1.23456\n2.0,0.2,100\n";
+  const std::vector<std::string> rows = data_rows(rastered_map(map, 0.5, 0.0, 1.0, 0.0, 1.0));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], "0.25,0.25,3,4");         // (1 + 2 + 3 + 6) / 4
+  EXPECT_EQ(rows[1], "0.75,0.25,-1.235,1");    // 4 significant digits
+  EXPECT_EQ(data_rows(rastered_map(map, 0.5, 5.0, 6.0, 0.0, 1.0)).size(), 0u);
+}
+
+TEST(KeptResults, EachCaseKeepsItsSummaryRecordHistoriesAndMapsInBudget) {
+  const fs::path dir = acst::test::scratch_folder("sweep_kept");
+  const std::string one = R"([{"name": "dense", "set": {"/output/particle_histories": [{"name": "A", "at": [1.05, 1.05]}],
+      "/output/contours_at_S_over_B": [0.03], "/output/contour_fields": ["shear_strain", "N"]}}])";
+  const fs::path file = write(dir / "sweep.json", description(one, R"("gather": {"keep": {"rows": 40,
+      "maps": ["shear_strain_SB0.030", "N_SB0.030", "void_ratio_SB0.030"]}})"));
+  const std::string out = (dir / "out").string();
+  const Cli run = sweep({"--quiet", "--threads", "1", "--output", out, file.string()});  // maps need the plots
+  ASSERT_EQ(run.rc, 0) << run.err;
+  // The case wrote no void-ratio map: said, not fatal.
+  EXPECT_NE(run.err.find("case 'dense': it wrote no map void_ratio_SB0.030.csv"), std::string::npos) << run.err;
+  const fs::path cases = fs::path(out) / "cases" / "dense", kept = fs::path(out) / "kept" / "dense";
+  EXPECT_EQ(acst::common::read_input_file((kept / "summary.json").string()),
+            acst::common::read_input_file((cases / "summary.json").string()));
+  const std::string record = acst::common::read_input_file((cases / "load_settlement.csv").string());
+  const std::vector<std::string> all = data_rows(record), thin = data_rows(
+      acst::common::read_input_file((kept / "load_settlement.csv").string()));
+  ASSERT_GT(all.size(), 40u);
+  EXPECT_LE(thin.size(), 41u);
+  EXPECT_EQ(thin.front(), all.front());
+  EXPECT_EQ(thin.back(), all.back());
+  // The kept record still gives the case's peak to the summary's digits.
+  const json summary = read_json(cases / "summary.json");
+  double peak = 0.0;
+  for (const std::vector<double>& r : load_record(kept / "load_settlement.csv")) peak = std::max(peak, r[1]);
+  EXPECT_NEAR(peak, summary["q_ult_kPa"].get<double>(), 1e-6 * peak);
+  EXPECT_LE(data_rows(acst::common::read_input_file((kept / "particle_A.csv").string())).size(), 41u);
+  // The maps: cells of B/15 = 0.02 m over 4 B x 1.75 B (60 x 27 at most), every particle of the
+  // window counted once, and the mean of the shear strain over them that of the particles.
+  for (const char* m : {"shear_strain_SB0.030", "N_SB0.030"}) {
+    const std::string full = acst::common::read_input_file((cases / (std::string(m) + ".csv")).string());
+    const std::vector<std::string> cells = data_rows(acst::common::read_input_file((kept / (std::string(m) + ".csv")).string()));
+    ASSERT_FALSE(cells.empty()) << m;
+    EXPECT_LE(cells.size(), 60u * 27u) << m;
+    long counted = 0, inside = 0;
+    double sum_cells = 0.0, sum_particles = 0.0;
+    for (const std::string& c : cells) {
+      std::vector<double> v;
+      std::istringstream cs(c);
+      for (std::string cell; std::getline(cs, cell, ',');) v.push_back(std::stod(cell));
+      counted += static_cast<long>(v[3]);
+      sum_cells += v[2] * v[3];
+      EXPECT_GE(v[0], 1.2 - 0.6) << c;
+      EXPECT_LE(v[0], 1.2 + 0.6) << c;
+    }
+    for (const std::string& p : data_rows(full)) {
+      std::vector<double> v;
+      std::istringstream ps(p);
+      for (std::string cell; std::getline(ps, cell, ',');) v.push_back(std::stod(cell));
+      if (v[0] >= 0.6 && v[0] <= 1.8 && v[1] >= 1.2 - 0.45 && v[1] <= 1.2 + 0.075) ++inside, sum_particles += v[2];
+    }
+    EXPECT_EQ(counted, inside) << m;
+    EXPECT_NEAR(sum_cells, sum_particles, 1e-3 * (1.0 + std::abs(sum_particles))) << m;  // 4 digits a cell
+  }
+  // The budget (docs/sweeps.md, "Kept results"): under 350 kB a case.
+  std::uintmax_t bytes = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(kept)) bytes += fs::file_size(e.path());
+  EXPECT_LT(bytes, 350u * 1024u);
+  // The kept folder is the sweep's own: a second run into the folder is not refused.
+  const Cli again = sweep({"--quiet", "--no-plot", "--output", out, file.string()});
+  EXPECT_EQ(again.rc, 0) << again.err;
+}
+
+TEST(KeptResults, BadKeepDescriptionsNameTheirJsonPath) {
+  const std::string one = R"([{"name": "a"}])";
+  EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"rows": 1}})")).find("/gather/keep/rows"), std::string::npos);
+  EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"maps": ["../x"]}})")).find("/gather/keep/maps/0"),
+            std::string::npos);
+  EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"map_cell_over_B": 0}})")).find("/gather/keep/map_cell_over_B"),
+            std::string::npos);
+  EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"map_window_over_B": [4]}})")).find("/gather/keep/map_window_over_B"),
+            std::string::npos);
+  EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"colour": 1}})")).find("colour"), std::string::npos);
 }

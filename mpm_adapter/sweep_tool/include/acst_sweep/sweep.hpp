@@ -3,6 +3,7 @@
 // replaced, run one whole case at a time by acst_sweep (in turn, or spread over MPI ranks) and
 // gathered into one table and one overlay figure per group of cases.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,18 @@ struct SweepCase {
   Scene scene;
 };
 
+// What each case keeps in SWEEP/kept/CASE/ (docs/sweeps.md, "Kept results"): its summary, its
+// load record and particle histories thinned to `rows` rows, and the maps named in `maps` (stems
+// of its FIELD_SB*.csv or FIELD_peak.csv) averaged on square cells of map_cell_over_B B over a
+// window map_width_over_B B wide about the footing's centre and map_depth_over_B B deep below
+// the soil's top (and B/4 above it, for the heave).
+struct KeepSpec {
+  std::vector<std::string> maps;
+  std::size_t rows = 150;
+  double map_cell_over_B = 1.0 / 15.0;
+  double map_width_over_B = 4.0, map_depth_over_B = 1.5;
+};
+
 struct SweepSpec {
   std::string name, description, file, text;
   std::vector<SweepCase> cases;
@@ -27,6 +40,7 @@ struct SweepSpec {
   bool figures = true;                         // one overlay of the load curves per group
   std::vector<std::string> case_figures;       // files of each case copied to figures/cases/ for the report
   std::vector<Finding> findings;               // judged in report.md
+  std::optional<KeepSpec> keep;                // gather/keep: compact results of each case
 };
 
 // Reads a sweep description (docs/sweeps.md, "The description"). Every case's scene is built and
