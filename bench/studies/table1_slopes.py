@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""Which part of the sand model sets how steeply the peak friction angle falls with the void
+ratio (docs/calibration.md, "The peak friction angle against e and pressure"; results in
+bench/results/table1_slopes/).
+
+Runs the Table 1 prediction of Fukushima & Tatsuoka (1984) (data/calibration/*_table1_prediction.json:
+78 drained triaxial peaks, sigma3' 1.96-392 kPa, e_0.3 0.65-0.91) with a parameter set, changed
+where asked, and fits phi = a + b e_0.3 + c ln(sigma3') by least squares to the measured and to
+the simulated peaks, over all rows and over pressure ranges. b is the fall with the void ratio,
+c the fall with pressure, and -c/b the change of e that costs as much phi as one e-fold of
+pressure: in a model whose peak depends on the state parameter psi = e - e_c(p) alone it is the
+critical state line's slope de_c/dln p at the peak's pressure.
+
+  python3 bench/studies/table1_slopes.py [--out DIR] [--tool build/calibration/acst_fit] CASE ...
+  CASE: NAME:DESCRIPTION[:key=value,...]   (DESCRIPTION a data/calibration file; the values
+        replace the parameter set's, e.g. lambda_c=0.038,e_Gamma=0.9746)
+Writes OUT/slopes.csv (case, rows, source, n, dphi_de_deg, dphi_dln_sigma3_deg,
+equivalent_de_per_ln_sigma3, rms_deg: the fit's residual; bias_deg: the simulated minus the
+measured peak, mean over the rows).
+"""
+import argparse
+import csv
+import glob
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+RANGES = [("all", 0.0, 1e9), ("sigma3 >= 9 kPa", 9.0, 1e9), ("sigma3 >= 45 kPa", 45.0, 1e9), ("sigma3 < 25 kPa", 0.0, 25.0)]
+
+
+def least_squares(X, y):
+    """Coefficients of y ~ X (rows of 3) from the normal equations, by Gauss-Jordan elimination."""
+    A = [[sum(x[i] * x[j] for x in X) for j in range(3)] + [sum(x[i] * v for x, v in zip(X, y))] for i in range(3)]
+    for i in range(3):
+        k = max(range(i, 3), key=lambda r: abs(A[r][i]))
+        A[i], A[k] = A[k], A[i]
+        for r in range(3):
+            if r != i:
+                f = A[r][i] / A[i][i]
+                A[r] = [a - f * b for a, b in zip(A[r], A[i])]
+    return [A[i][3] / A[i][i] for i in range(3)]
+
+
+def run_case(text, out, tool):
+    parts = text.split(":")
+    if len(parts) not in (2, 3) or not re.fullmatch(r"[A-Za-z0-9_.-]+", parts[0]):
+        sys.exit(f"{text}: expected NAME:DESCRIPTION[:key=value,...] with NAME a plain stem")
+    name, description = parts[0], os.path.abspath(parts[1])
+    with open(description) as f:
+        d = json.load(f)
+    here = os.path.dirname(description)
+    d["defaults"]["data"] = os.path.normpath(os.path.join(here, d["defaults"]["data"]))
+    material = os.path.normpath(os.path.join(here, d["material"]["file"]))
+    case_dir = os.path.join(out, name)
+    os.makedirs(case_dir, exist_ok=True)
+    if len(parts) == 3:
+        with open(material) as f:
+            p = json.load(f)
+        for item in parts[2].split(","):
+            key, value = item.split("=", 1)
+            if key not in p["parameters"]:
+                sys.exit(f"{text}: '{key}' is not a parameter of {material}")
+            p["parameters"][key] = float(value)
+        material = os.path.join(case_dir, "parameters.json")
+        with open(material, "w") as f:
+            json.dump(p, f, indent=1)
+    d["material"] = {"file": material}
+    d["name"] = name
+    d["output"]["directory"] = os.path.join(case_dir, "report")
+    path = os.path.join(case_dir, "description.json")
+    with open(path, "w") as f:
+        json.dump(d, f, indent=1)
+    run = subprocess.run([tool, path], capture_output=True, text=True)
+    if run.returncode != 0:
+        sys.exit(f"{text}: acst_fit failed: {run.stderr.strip()}")
+    rows = []
+    for points in glob.glob(os.path.join(case_dir, "report", "curves", "*_points.csv")):
+        with open(points) as f:
+            rows += [(float(r["sigma3_kPa"]), float(r["void_ratio"]), float(r["measured"]), float(r["simulated"]))
+                     for r in csv.DictReader(f)]
+    return name, rows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", "table1_slopes"))
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
+    ap.add_argument("cases", nargs="+")
+    a = ap.parse_args()
+    a.out = os.path.abspath(a.out)
+    table = []
+    for text in a.cases:
+        name, rows = run_case(text, a.out, a.tool)
+        for label, lo, hi in RANGES:
+            chosen = [r for r in rows if lo <= r[0] < hi]
+            for source, k in (("measured", 2), ("simulated", 3)):
+                X = [(1.0, r[1], math.log(r[0])) for r in chosen]
+                y = [r[k] for r in chosen]
+                c = least_squares(X, y)
+                rms = math.sqrt(sum((v - (c[0] + c[1] * x[1] + c[2] * x[2])) ** 2 for x, v in zip(X, y)) / len(y))
+                table.append({"case": name, "rows": label, "source": source, "n": len(y), "dphi_de_deg": round(c[1], 1),
+                              "dphi_dln_sigma3_deg": round(c[2], 2), "equivalent_de_per_ln_sigma3": round(-c[2] / c[1], 4),
+                              "rms_deg": round(rms, 2),
+                              "bias_deg": round(sum(r[3] - r[2] for r in chosen) / len(chosen), 2) if k == 3 else ""})
+                print(json.dumps(table[-1]), flush=True)
+    with open(os.path.join(a.out, "slopes.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0]))
+        w.writeheader()
+        w.writerows(table)
+
+
+if __name__ == "__main__":
+    main()
