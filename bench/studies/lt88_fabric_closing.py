@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""How fast the fabric turns, from the bedding series of Lam & Tatsuoka (1988) (docs/calibration.md,
+"The fabric's rate from the bedding series"; results in bench/results/lt88_fabric_closing/).
+
+Their drained triaxial tests at 98 kPa with the load at omega = 0, 30, 60 and 90 deg to the
+deposition direction (Fig. 5a, data/lab/lam_tatsuoka_1988/) run to 14-17 % axial strain. Between
+6 and 12 % the gap in sigma1/sigma3 between omega 0 and 90 closes to 0.56 of itself, and between
+30 and 90 to 0.35: the bedding's effect fades as the sand strains. Two things close it, the
+fabric turning toward the load (at the rate k_f) and the specimens' densities converging on the
+critical state; with k_f = 0 the model keeps only the second, so the driver separates the two.
+For each k_f the four tests run once with the delivered set (its other values unchanged), and the
+closing ratios gap(12 %) / gap(6 %) of the simulated curves are set beside the measured ones.
+
+  python3 bench/studies/lt88_fabric_closing.py [--out DIR] [--tool build/calibration/acst_fit] K_F ...
+Writes OUT/closing.csv (k_f, the simulated and measured gaps at 6 and 12 % and their ratios,
+for omega 0 - 90 and 30 - 90) and OUT/closing.png.
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from footing_common import gp_quoted, value_at  # noqa: E402
+
+TESTS = {0: "lt88_fig5a_w00_hw1p0", 30: "lt88_fig5a_w30_hw1p0", 60: "lt88_fig5a_w60_hw1p0", 90: "lt88_fig5a_w90_hw1p0"}
+STRAINS = (6.0, 12.0)
+
+
+def description(k_f, out):
+    fit = json.load(open(os.path.join(ROOT, "data", "calibration", "toyoura_acst_fit.json")))
+    with open(os.path.join(ROOT, "data", "parameters", "toyoura_acst_calibrated.json")) as f:
+        p = json.load(f)
+    p["parameters"]["k_f"] = k_f
+    case = os.path.join(out, f"k_f_{k_f:g}".replace(".", "p"))
+    os.makedirs(case, exist_ok=True)
+    with open(os.path.join(case, "parameters.json"), "w") as f:
+        json.dump(p, f, indent=1)
+    experiments = []
+    for e in fit["experiments"]:
+        if any(t in e["data"] for t in TESTS.values()):
+            e = dict(e)
+            e["data"] = os.path.normpath(os.path.join(ROOT, "data", "calibration", e["data"]))
+            experiments.append(e)
+    d = {"name": "lt88_closing", "description": f"the bedding series with k_f = {k_f:g}",
+         "material": {"file": os.path.join(case, "parameters.json")}, "parameters": {},
+         "defaults": fit["defaults"], "experiments": experiments, "optimizer": {"design_points": 0, "starts": 1},
+         "output": {"directory": os.path.join(case, "report")}}
+    with open(os.path.join(case, "description.json"), "w") as f:
+        json.dump(d, f, indent=1)
+    return case
+
+
+def stress_ratio_curves(case):
+    """{omega: (eps_a %, measured, simulated)} of the stress ratio (series 0)."""
+    out = {}
+    for omega, test in TESTS.items():
+        with open(os.path.join(case, "report", "curves", test + "_points.csv")) as f:
+            rows = [r for r in csv.DictReader(f) if r["series"] == "0"]
+        out[omega] = ([float(r["eps_a_pct"]) for r in rows], [float(r["measured"]) for r in rows],
+                      [float(r["simulated"]) for r in rows])
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", "lt88_fabric_closing"))
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
+    ap.add_argument("k_f", nargs="+", type=float)
+    a = ap.parse_args()
+    a.out = os.path.abspath(a.out)
+    table = []
+    for k_f in a.k_f:
+        if not 0.0 <= k_f <= 100.0:
+            sys.exit(f"k_f {k_f:g} is out of range; allowed: [0, 100]")
+        case = description(k_f, a.out)
+        run = subprocess.run([a.tool, os.path.join(case, "description.json")], capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit(f"k_f {k_f:g}: acst_fit failed: {run.stderr.strip()}")
+        c = stress_ratio_curves(case)
+        row = {"k_f": k_f}
+        for source, k in (("simulated", 2), ("measured", 1)):
+            for low in (0, 30):
+                gaps = [value_at(c[low][0], c[low][k], e) - value_at(c[90][0], c[90][k], e) for e in STRAINS]
+                row[f"{source}_gap_{low}_90_at_6pct"] = round(gaps[0], 4)
+                row[f"{source}_gap_{low}_90_at_12pct"] = round(gaps[1], 4)
+                row[f"{source}_closing_{low}_90"] = round(gaps[1] / gaps[0], 3)
+        table.append(row)
+        print(json.dumps(row), flush=True)
+    with open(os.path.join(a.out, "closing.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0]))
+        w.writeheader()
+        w.writerows(table)
+    pts = lambda key: "\n".join(f"{r['k_f']} {r[key]}" for r in table) + "\ne"
+    gp = ["set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(a.out, 'closing.png'))}",
+          "set grid", "set key top right", "set xlabel 'k_f (the fabric rate)'",
+          "set ylabel 'gap in sigma1/sigma3 at 12 % over the gap at 6 % axial strain'",
+          "set title 'Lam & Tatsuoka (1988) at 98 kPa: how the bedding gap closes'",
+          "plot '-' using 1:2 with linespoints lw 2 pt 7 title 'simulated, omega 0 - 90', "
+          "'-' using 1:2 with linespoints lw 2 pt 5 title 'simulated, omega 30 - 90', "
+          f"{table[0]['measured_closing_0_90']} with lines dt 2 lw 2 title 'measured, omega 0 - 90', "
+          f"{table[0]['measured_closing_30_90']} with lines dt 3 lw 2 title 'measured, omega 30 - 90'",
+          pts("simulated_closing_0_90"), pts("simulated_closing_30_90"), ""]
+    subprocess.run(["gnuplot"], input="\n".join(gp), text=True, check=False)
+
+
+if __name__ == "__main__":
+    main()
