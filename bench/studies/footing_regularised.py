@@ -215,6 +215,28 @@ def write_table_and_figures(out, rows):
             step = max(1, len(S) // 2000)  # a few thousand points draw the curve
             lines.append("\n".join(f"{a} {b}" for a, b in zip(S[::step], q[::step])) + "\ne")
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
+    plot_lengths(out, every)
+
+
+def plot_lengths(out, every):
+    """V85.6's q_ult against the cell on the graded grid for each internal length (0: the local
+    model), at the study's speed and CFL and m = 1: the length's sensitivity."""
+    def length_of(r):
+        return 0.085 if r["internal_length_m"] == "default" else float(r["internal_length_m"])
+    chosen = [r for r in every if r["case"].startswith("V85p6") and r["grid"] == "graded" and r["set"] == "acst"
+              and float(r["speed_factor"]) == 1.0 and float(r["cfl"]) == 0.5 and "_m" not in r["case"].split("_cfl")[1]]
+    lengths = sorted({length_of(r) for r in chosen})
+    if not lengths:
+        return
+    data = [sorted((float(r["cell_m"]), float(r["q_ult_kPa"])) for r in chosen if length_of(r) == l) for l in lengths]
+    lines = ["set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h_by_length.png'))}",
+             "set grid", "set key bottom right", "set xlabel 'cell size h [m]'", "set ylabel 'q_ult [kPa]'",
+             "set xrange [0:0.1]", "set yrange [1000:1700]",
+             "set title 'V85.6, graded grid: the largest load against the cell for each internal length l (S/B up to 0.25)'",
+             "plot " + ", ".join(f"'-' using 1:2 with linespoints lw 2 pt 7 title {gp_quoted('local (l = 0)' if l == 0 else f'l = {l:g} m')}"
+                                for l in lengths)]
+    lines += ["\n".join(f"{h} {q}" for h, q in pts) + "\ne" for pts in data] + [""]
+    subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
 
 
 if __name__ == "__main__":
