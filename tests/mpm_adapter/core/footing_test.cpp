@@ -2,7 +2,8 @@
 // confined elastic layer, Prandtl's bearing capacity on weightless Tresca soil (rough and smooth,
 // converging with the cell) and on weightless frictional (Drucker-Prager) soil, a load that rises
 // smoothly through cell crossings, no tension and no load once separated, Coulomb friction
-// capping the horizontal load, and no moment under a centred footing.
+// capping the horizontal load, an inclined footing failing at its envelope's vertex, and no
+// moment under a centred footing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -181,6 +182,37 @@ TEST(FootingContact, RoughFootingDragsTheSoilBeyondThatFriction) {
       R"({"grid_damping": 2})"));
   const std::vector<Period> rows = run(s, 20, [](const Simulation& x) { return x.footing().settlement() >= 0.05; });
   EXPECT_GT(rows.back().H, 0.3 * rows.back().V) << "no slip while pressed";
+}
+
+// A footing driven along a direction inclined to the vertical, on associated frictional soil,
+// fails near the vertex of its V-H envelope: for associated flow every displacement direction
+// within the vertex's cone of normals (up to about 63 deg from the vertical on Butterfield &
+// Gottardi's parabola, t_H about 0.5) gives the vertical capacity with H = 0. The rough base
+// carries shear (the elastic test above), so a small H at failure is the mechanics, not the
+// contact. Drucker-Prager soil phi = psi = 35 deg, c = 5 kPa, under gravity, B = 0.3 m, cells of
+// 0.1 m; measured 198.4, 193.3, 180.7 kN/m and H/V 0, 0.029, 0.065 at 0, 20, 40 deg.
+TEST(FootingContact, AnInclinedFootingOnAssociatedSoilFailsNearTheEnvelopesVertex) {
+  const auto peak = [](double inclination_deg, double& h_over_v) {
+    Simulation s = mpm_test::build(R"({"name": "vertex", "grid": {"cell_size": 0.1},
+        "materials": {"soil": {"model": "drucker_prager", "parameters": {"E": 1e5, "nu": 0.3, "friction_angle_deg": 35,
+                                                                       "cohesion": 5}}},
+        "bodies": [{"material": "soil", "x_range": [0, 2.4], "y_range": [0, 1.2], "density": 1600}], "gravity": 9.8,
+        "initial_stress": {"type": "geostatic", "K0": 0.5}, "surcharge_kPa": 1,
+        "footing": {"width": 0.3, "centre_x": 1.2, "speed": 0.05, "interface": "rough", "inclination_deg": )" +
+                                   std::to_string(inclination_deg) + R"(},
+        "solver": {"xpic_every": 10, "threads": 1}, "stop": {"S_over_B": 0.03}})");
+    const std::vector<Period> rows = run(s, 10, [](const Simulation& x) { return x.footing().settlement() >= 0.03 * 0.3; });
+    const auto top = std::max_element(rows.begin(), rows.end(), [](const Period& a, const Period& b) { return a.V < b.V; });
+    h_over_v = top->H / top->V;
+    return top->V;
+  };
+  double h0 = 0.0, h20 = 0.0;
+  const double v0 = peak(0.0, h0), v20 = peak(-20.0, h20);
+  EXPECT_GT(v0, 100.0);
+  EXPECT_NEAR(h0, 0.0, 1e-3);
+  // Within 5 % of the vertical capacity, and H/V far below the displacement's tan 20 = 0.36.
+  EXPECT_GT(v20, 0.95 * v0) << v20 << " against " << v0;
+  EXPECT_LT(std::fabs(h20), 0.1) << h20;
 }
 
 // Which face pushes a particle (Footing::contact on single particles, against the footing's
