@@ -107,6 +107,13 @@ void add_summary_columns(ordered_json& row, const std::string& summary_file) {
             f::fail(at + "/" + key, "expected a measure named with its unit (heave_left_m, sheared_area_left_m2)");
           row[key.substr(0, unit) + "_" + when + key.substr(unit)] = item.value();
         }
+        // How one-sided the mechanism is: |A_left - A_right| / (A_left + A_right) of the soil
+        // sheared past 5 % (0 for a symmetric one, 1 for one side only).
+        const std::string l = std::string("sheared_area_left_") + when + "_m2", r = std::string("sheared_area_right_") + when + "_m2";
+        if (row.contains(l) && row.contains(r) && row[l].is_number() && row[r].is_number()) {
+          const double a = row[l].get<double>(), b = row[r].get<double>();
+          row[std::string("sheared_area_asymmetry_") + when] = a + b > 0.0 ? ordered_json(std::fabs(a - b) / (a + b)) : ordered_json();
+        }
       }
     }
   } catch (const common::InputError& e) {

@@ -458,6 +458,10 @@ TEST(SweepRun, AnInclinedLoadShearsMoreSoilOnTheSideItPushesTowards) {
   EXPECT_GT(row["sheared_area_right_at_end_m2"].get<double>(), 1.5 * row["sheared_area_left_at_end_m2"].get<double>());
   EXPECT_GT(row["heave_right_at_end_m"].get<double>(), row["heave_left_at_end_m"].get<double>());
   EXPECT_GT(row["H_at_peak_kN_per_m"].get<double>(), 0.0);
+  // The asymmetry column is |A_left - A_right| / (A_left + A_right) of the side measures.
+  const double l = row["sheared_area_left_at_end_m2"].get<double>(), r = row["sheared_area_right_at_end_m2"].get<double>();
+  EXPECT_NEAR(row["sheared_area_asymmetry_at_end"].get<double>(), (r - l) / (r + l), 1e-12);
+  EXPECT_GT(row["sheared_area_asymmetry_at_end"].get<double>(), 0.2);
 }
 
 // A failed run's record ends in the failure's own spikes (an ejected particle's contact force):
