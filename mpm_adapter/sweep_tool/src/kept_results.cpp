@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <system_error>
 
 #include "acst_common/files.hpp"
 #include "acst_sweep/sweep_case.hpp"
@@ -112,7 +113,12 @@ std::vector<std::string> keep_case_results(const KeepSpec& keep, const SweepCase
   const fs::path from = case_folder(sweep_dir, c.name);
   if (!fs::exists(from / "summary.json") && !fs::exists(from / "load_settlement.failed.csv")) return warnings;
   const fs::path to = fs::path(sweep_dir) / sweep_kept_folder / c.name;
-  fs::create_directories(to);
+  std::error_code ec;
+  fs::create_directories(to, ec);
+  if (ec) {
+    warnings.push_back("case '" + c.name + "': cannot make " + to.string() + ": " + ec.message());
+    return warnings;
+  }
   const auto copy = [&](const std::string& name, const auto& transform) {
     try {
       const std::string text = common::read_input_file((from / name).string());
