@@ -11,7 +11,8 @@ critical state; with k_f = 0 the model keeps only the second, so the driver sepa
 For each k_f the four tests run once with the delivered set (its other values unchanged), and the
 closing ratios gap(12 %) / gap(6 %) of the simulated curves are set beside the measured ones.
 
-  python3 bench/studies/lt88_fabric_closing.py [--out DIR] [--tool build/calibration/acst_fit] K_F ...
+  python3 bench/studies/lt88_fabric_closing.py [--out DIR] [--set PARAMETERS.json] [--tool build/calibration/acst_fit] K_F ...
+(--set: the parameter set whose k_f is replaced; default the delivered one)
 Writes OUT/closing.csv (k_f, the simulated and measured gaps at 6 and 12 % and their ratios,
 for omega 0 - 90 and 30 - 90) and OUT/closing.png.
 """
@@ -30,9 +31,13 @@ TESTS = {0: "lt88_fig5a_w00_hw1p0", 30: "lt88_fig5a_w30_hw1p0", 60: "lt88_fig5a_
 STRAINS = (6.0, 12.0)
 
 
-def description(k_f, out):
-    fit = json.load(open(os.path.join(ROOT, "data", "calibration", "toyoura_acst_fit.json")))
-    with open(os.path.join(ROOT, "data", "parameters", "toyoura_acst_calibrated.json")) as f:
+DELIVERED = os.path.join(ROOT, "data", "parameters", "toyoura_acst_calibrated.json")
+
+
+def description(k_f, out, parameter_set=DELIVERED):
+    with open(os.path.join(ROOT, "data", "calibration", "toyoura_acst_fit.json")) as f:
+        fit = json.load(f)
+    with open(parameter_set) as f:
         p = json.load(f)
     p["parameters"]["k_f"] = k_f
     case = os.path.join(out, f"k_f_{k_f:g}".replace(".", "p"))
@@ -69,6 +74,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "results", "lt88_fabric_closing"))
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
+    ap.add_argument("--set", default=DELIVERED, help="the parameter set whose k_f is replaced")
     ap.add_argument("k_f", nargs="+", type=float)
     a = ap.parse_args()
     a.out = os.path.abspath(a.out)
@@ -76,7 +82,7 @@ def main():
     for k_f in a.k_f:
         if not 0.0 <= k_f <= 100.0:
             sys.exit(f"k_f {k_f:g} is out of range; allowed: [0, 100]")
-        case = description(k_f, a.out)
+        case = description(k_f, a.out, os.path.abspath(a.set))
         run = subprocess.run([a.tool, os.path.join(case, "description.json")], capture_output=True, text=True)
         if run.returncode != 0:
             sys.exit(f"k_f {k_f:g}: acst_fit failed: {run.stderr.strip()}")
