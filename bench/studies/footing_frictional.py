@@ -121,8 +121,16 @@ def plot(out, rows):
     done = [r for r in rows if r.get("status") == "done"]
     if not done:
         return
+    # The method's error against the cell, for each friction angle's graded, associated runs.
+    series = []
+    for phi in sorted({r["friction_angle_deg"] for r in done}):
+        pts = sorted((r["cell_m"], r["error_pct"]) for r in done if r["friction_angle_deg"] == phi
+                     and r["grid"] == "graded" and r["error_pct"] != "")
+        if pts:
+            series.append((f"associated, phi = {phi:g} deg, graded grid", "\n".join(f"{h},{e}" for h, e in pts) + "\ne"))
     lines = ["set terminal pngcairo size 1600,560 noenhanced", "set datafile separator ','",
-             f"set output {gp_quoted(os.path.join(out, 'q_against_h.png'))}", "set multiplot layout 1,2", "set grid",
+             f"set output {gp_quoted(os.path.join(out, 'q_against_h.png'))}",
+             f"set multiplot layout 1,{2 if series else 1}", "set grid",
              "set key outside right font ',9'", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'", "set xrange [0:*]",
              "set title 'Weightless Drucker-Prager soil under the Kimura footing (B = 0.9 m)'"]
     plots = [f"{gp_quoted(os.path.join(out, r['case'], 'load_settlement.csv'))} using 'S_over_B':'q_kPa' with lines lw 2 "
@@ -131,20 +139,12 @@ def plot(out, rows):
     closed = sorted({r["q_closed_form_kPa"] for r in done if r["q_closed_form_kPa"] != ""})
     plots += [f"{v} with lines dt 2 lc rgb 'black' title {gp_quoted('c N_c = ' + str(v) + ' kPa')}" for v in closed]
     lines.append("plot " + ", ".join(plots))
-    series = []
-    for phi in sorted({r["friction_angle_deg"] for r in done}):
-        pts = sorted((r["cell_m"], r["error_pct"]) for r in done if r["friction_angle_deg"] == phi
-                     and r["grid"] == "graded" and r["error_pct"] != "")
-        if pts:
-            series.append((f"associated, phi = {phi:g} deg, graded grid", "\n".join(f"{h},{e}" for h, e in pts) + "\ne"))
-    if not series:  # no graded, associated run to chart against c N_c: the curves alone
-        lines[3] = "set multiplot layout 1,1"
-        subprocess.run(["gnuplot"], input="\n".join(lines + ["unset multiplot", ""]), text=True, check=False)
-        return
-    lines += ["set xlabel 'cell size h [m]'", "set ylabel 'q over S/B 0.03-0.06 against c N_c [%]'", "set xrange [0:0.1]",
-              "set yrange [0:*]", "set key top left", "set title 'The method''s error against Prandtl'",
-              "plot " + ", ".join(f"'-' using 1:2 with linespoints pt 7 lw 2 title {gp_quoted(t)}" for t, _ in series)]
-    lines += [d for _, d in series] + ["unset multiplot", ""]
+    if series:
+        lines += ["set xlabel 'cell size h [m]'", "set ylabel 'q over S/B 0.03-0.06 against c N_c [%]'", "set xrange [0:0.1]",
+                  "set yrange [0:*]", "set key top left", "set title 'The method''s error against Prandtl'",
+                  "plot " + ", ".join(f"'-' using 1:2 with linespoints pt 7 lw 2 title {gp_quoted(t)}" for t, _ in series)]
+        lines += [d for _, d in series]
+    lines += ["unset multiplot", ""]
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
 
 

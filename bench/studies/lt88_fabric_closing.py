@@ -25,6 +25,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from calibration_runs import points, run_prediction  # noqa: E402
 from footing_common import gp_quoted, value_at  # noqa: E402
 
 TESTS = {0: "lt88_fig5a_w00_hw1p0", 30: "lt88_fig5a_w30_hw1p0", 60: "lt88_fig5a_w60_hw1p0", 90: "lt88_fig5a_w90_hw1p0"}
@@ -34,37 +35,23 @@ STRAINS = (6.0, 12.0)
 DELIVERED = os.path.join(ROOT, "data", "parameters", "toyoura_acst_calibrated.json")
 
 
-def description(k_f, out, parameter_set=DELIVERED):
+def closing_run(k_f, out, parameter_set, tool):
+    """The four tests run with `parameter_set`'s k_f replaced; returns the report's folder."""
     with open(os.path.join(ROOT, "data", "calibration", "toyoura_acst_fit.json")) as f:
         fit = json.load(f)
-    with open(parameter_set) as f:
-        p = json.load(f)
-    p["parameters"]["k_f"] = k_f
-    case = os.path.join(out, f"k_f_{k_f:g}".replace(".", "p"))
-    os.makedirs(case, exist_ok=True)
-    with open(os.path.join(case, "parameters.json"), "w") as f:
-        json.dump(p, f, indent=1)
-    experiments = []
-    for e in fit["experiments"]:
-        if any(t in e["data"] for t in TESTS.values()):
-            e = dict(e)
-            e["data"] = os.path.normpath(os.path.join(ROOT, "data", "calibration", e["data"]))
-            experiments.append(e)
-    d = {"name": "lt88_closing", "description": f"the bedding series with k_f = {k_f:g}",
-         "material": {"file": os.path.join(case, "parameters.json")}, "parameters": {},
-         "defaults": fit["defaults"], "experiments": experiments, "optimizer": {"design_points": 0, "starts": 1},
-         "output": {"directory": os.path.join(case, "report")}}
-    with open(os.path.join(case, "description.json"), "w") as f:
-        json.dump(d, f, indent=1)
-    return case
+    experiments = [dict(e, data=os.path.normpath(os.path.join(ROOT, "data", "calibration", e["data"])))
+                   for e in fit["experiments"] if any(t in e["data"] for t in TESTS.values())]
+    d = {"name": "lt88_closing", "description": f"the bedding series with k_f = {k_f:g}", "parameters": {},
+         "defaults": fit["defaults"], "experiments": experiments, "optimizer": {"design_points": 0, "starts": 1}}
+    return run_prediction(os.path.join(out, f"k_f_{k_f:g}".replace(".", "p")), d, parameter_set, {"k_f": k_f}, tool,
+                          f"k_f {k_f:g}")
 
 
-def stress_ratio_curves(case):
+def stress_ratio_curves(report):
     """{omega: (eps_a %, measured, simulated)} of the stress ratio (series 0)."""
     out = {}
     for omega, test in TESTS.items():
-        with open(os.path.join(case, "report", "curves", test + "_points.csv")) as f:
-            rows = [r for r in csv.DictReader(f) if r["series"] == "0"]
+        rows = [r for r in points(report, test) if r["series"] == "0"]
         out[omega] = ([float(r["eps_a_pct"]) for r in rows], [float(r["measured"]) for r in rows],
                       [float(r["simulated"]) for r in rows])
     return out
@@ -82,11 +69,7 @@ def main():
     for k_f in a.k_f:
         if not 0.0 <= k_f <= 100.0:
             sys.exit(f"k_f {k_f:g} is out of range; allowed: [0, 100]")
-        case = description(k_f, a.out, os.path.abspath(a.set))
-        run = subprocess.run([a.tool, os.path.join(case, "description.json")], capture_output=True, text=True)
-        if run.returncode != 0:
-            sys.exit(f"k_f {k_f:g}: acst_fit failed: {run.stderr.strip()}")
-        c = stress_ratio_curves(case)
+        c = stress_ratio_curves(closing_run(k_f, a.out, os.path.abspath(a.set), a.tool))
         row = {"k_f": k_f}
         for source, k in (("simulated", 2), ("measured", 1)):
             for low in (0, 30):

@@ -25,8 +25,10 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from calibration_runs import run_prediction  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RANGES = [("all", 0.0, 1e9), ("sigma3 >= 9 kPa", 9.0, 1e9), ("sigma3 >= 45 kPa", 45.0, 1e9), ("sigma3 < 25 kPa", 0.0, 25.0)]
@@ -54,32 +56,13 @@ def run_case(text, out, tool):
         d = json.load(f)
     here = os.path.dirname(description)
     d["defaults"]["data"] = os.path.normpath(os.path.join(here, d["defaults"]["data"]))
-    material = os.path.normpath(os.path.join(here, d["material"]["file"]))
-    case_dir = os.path.join(out, name)
-    os.makedirs(case_dir, exist_ok=True)
-    if len(parts) == 3:
-        with open(material) as f:
-            p = json.load(f)
-        for item in parts[2].split(","):
-            key, value = item.split("=", 1)
-            if key not in p["parameters"]:
-                sys.exit(f"{text}: '{key}' is not a parameter of {material}")
-            p["parameters"][key] = float(value)
-        material = os.path.join(case_dir, "parameters.json")
-        with open(material, "w") as f:
-            json.dump(p, f, indent=1)
-    d["material"] = {"file": material}
     d["name"] = name
-    d["output"]["directory"] = os.path.join(case_dir, "report")
-    path = os.path.join(case_dir, "description.json")
-    with open(path, "w") as f:
-        json.dump(d, f, indent=1)
-    run = subprocess.run([tool, path], capture_output=True, text=True)
-    if run.returncode != 0:
-        sys.exit(f"{text}: acst_fit failed: {run.stderr.strip()}")
+    replaced = {k: float(v) for k, v in (item.split("=", 1) for item in parts[2].split(","))} if len(parts) == 3 else {}
+    report = run_prediction(os.path.join(out, name), d, os.path.normpath(os.path.join(here, d["material"]["file"])),
+                            replaced, tool, text)
     rows = []
-    for points in glob.glob(os.path.join(case_dir, "report", "curves", "*_points.csv")):
-        with open(points) as f:
+    for path in glob.glob(os.path.join(report, "curves", "*_points.csv")):
+        with open(path) as f:
             rows += [(float(r["sigma3_kPa"]), float(r["void_ratio"]), float(r["measured"]), float(r["simulated"]))
                      for r in csv.DictReader(f)]
     return name, rows

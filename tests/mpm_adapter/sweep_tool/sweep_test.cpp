@@ -554,6 +554,14 @@ std::vector<std::string> data_rows(const std::string& text) {
   return rows;
 }
 
+// The numbers of a CSV row.
+std::vector<double> numbers_in(const std::string& row) {
+  std::vector<double> v;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, ',');) v.push_back(std::stod(cell));
+  return v;
+}
+
 }  // namespace
 
 TEST(KeptResults, ARecordIsThinnedToItsRowsWithItsEndsAndPeak) {
@@ -621,18 +629,14 @@ TEST(KeptResults, EachCaseKeepsItsSummaryRecordHistoriesAndMapsInBudget) {
     long counted = 0, inside = 0;
     double sum_cells = 0.0, sum_particles = 0.0;
     for (const std::string& c : cells) {
-      std::vector<double> v;
-      std::istringstream cs(c);
-      for (std::string cell; std::getline(cs, cell, ',');) v.push_back(std::stod(cell));
+      const std::vector<double> v = numbers_in(c);
       counted += static_cast<long>(v[3]);
       sum_cells += v[2] * v[3];
       EXPECT_GE(v[0], 1.2 - 0.6) << c;
       EXPECT_LE(v[0], 1.2 + 0.6) << c;
     }
     for (const std::string& p : data_rows(full)) {
-      std::vector<double> v;
-      std::istringstream ps(p);
-      for (std::string cell; std::getline(ps, cell, ',');) v.push_back(std::stod(cell));
+      const std::vector<double> v = numbers_in(p);
       if (v[0] >= 0.6 && v[0] <= 1.8 && v[1] >= 1.2 - 0.45 && v[1] <= 1.2 + 0.075) ++inside, sum_particles += v[2];
     }
     EXPECT_EQ(counted, inside) << m;
