@@ -9,6 +9,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "acst_common/csv_table.hpp"
 #include "acst_common/files.hpp"
 #include "acst_sweep/sweep_case.hpp"
 
@@ -21,13 +22,6 @@ std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> out;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> out;
-  std::istringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
   return out;
 }
 
@@ -54,7 +48,7 @@ std::string decimated_csv(const std::string& text, std::size_t rows, const std::
   std::vector<std::string> header;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (lines[i].empty() || lines[i][0] == '#' || header.empty()) {
-      if (!lines[i].empty() && lines[i][0] != '#') header = cells_of(lines[i]);
+      if (!lines[i].empty() && lines[i][0] != '#') header = common::csv_cells(lines[i]);
       out += lines[i] + "\n";
       continue;
     }
@@ -70,7 +64,7 @@ std::string decimated_csv(const std::string& text, std::size_t rows, const std::
     std::size_t best = 0;
     double largest = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < data.size(); ++k) {
-      const double v = number_in(cells_of(lines[data[k]]), c);
+      const double v = number_in(common::csv_cells(lines[data[k]]), c);
       if (v > largest) largest = v, best = k;
     }
     kept[best] = true;
@@ -84,15 +78,9 @@ std::string rastered_map(const std::string& text, double cell, double x0, double
   const long nx = std::max(1L, std::lround(std::ceil((x1 - x0) / cell)));
   const long ny = std::max(1L, std::lround(std::ceil((y1 - y0) / cell)));
   std::map<std::pair<long, long>, std::pair<double, long>> sums;  // (j, i) -> (sum, count): rows by height
-  bool header = true;
-  for (const std::string& line : lines_of(text)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    const std::vector<std::string> c = cells_of(line);
-    const double x = number_in(c, 0), y = number_in(c, 1), v = number_in(c, 2);
+  for (const std::vector<double>& c : common::parse_csv_table(text).rows) {
+    if (c.size() < 3) continue;
+    const double x = c[0], y = c[1], v = c[2];
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(v) || x < x0 || x > x1 || y < y0 || y > y1) continue;
     const long i = std::min(nx - 1, static_cast<long>(std::floor((x - x0) / cell)));
     const long j = std::min(ny - 1, static_cast<long>(std::floor((y - y0) / cell)));

@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <limits>
-#include <sstream>
 
+#include "acst_common/csv_table.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
 #include "acst_common/json_file.hpp"
@@ -29,30 +27,10 @@ struct LoadCurve {
 
 LoadCurve read_load_record(const std::string& path) {
   LoadCurve c;
-  std::ifstream in(path);
-  if (!in) return c;
-  std::string line;
-  std::vector<std::string> header;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    auto value = [&](const char* name) {
-      const auto it = std::find(header.begin(), header.end(), name);
-      const std::size_t k = static_cast<std::size_t>(it - header.begin());
-      return it == header.end() || k >= cells.size() ? std::numeric_limits<double>::quiet_NaN() : std::strtod(cells[k].c_str(), nullptr);
-    };
-    c.S_over_B.push_back(value("S_over_B"));
-    c.V.push_back(value("V_kN_per_m"));
-    c.H.push_back(value("H_kN_per_m"));
-    c.M.push_back(value("M_kNm_per_m"));
-    c.q.push_back(value("q_kPa"));
-  }
+  if (!fs::exists(path)) return c;
+  const common::CsvTable t = common::parse_csv_table(common::read_input_file(path));
+  c.S_over_B = t.values("S_over_B"), c.V = t.values("V_kN_per_m"), c.H = t.values("H_kN_per_m");
+  c.M = t.values("M_kNm_per_m"), c.q = t.values("q_kPa");
   return c;
 }
 

@@ -12,7 +12,7 @@ namespace acst::mpm {
 namespace {
 
 const char* const usage =
-    "usage: acst_sweep [--help] [--quiet] [--no-plot] [--output DIR] [--threads N] [--retry-failed] [--list] [--report FILE]\n"
+    "usage: acst_sweep [--help] [--quiet] [--no-plot] [--output DIR] [--threads N] [--retry-failed] [--list] [--replot] [--report FILE]\n"
     "                  [--set '{\"/POINTER\": VALUE, ...}'] SWEEP.json\n"
     "       mpirun -n RANKS acst_sweep [options] SWEEP.json\n"
     "\n"
@@ -24,6 +24,8 @@ const char* const usage =
     "  --threads N       OpenMP threads per case\n"
     "  --retry-failed    run the cases that failed before again (default: keep their rows)\n"
     "  --list            print the cases (name, groups, origin) and stop\n"
+    "  --replot          run nothing: draw the figures and write the report again from DIR's\n"
+    "                    table.json and kept results (a recorded study without its case folders)\n"
     "  --report FILE     also write the report (findings, table, figures) to FILE\n"
     "  --set JSON        values put into every case after the description's own \"set\" (a JSON\n"
     "                    object of JSON pointers and values), e.g. '{\"/grid/cell_size\": 0.18}'\n"
@@ -33,7 +35,8 @@ const char* const usage =
     "Run it again to go on: finished cases are kept, an interrupted case resumes from its checkpoint.\n"
     "Writes DIR/cases/NAME (acst_mpm's files and sweep_case.json, each folder published whole),\n"
     "DIR/table.csv, table.md, table.json (one row per case), DIR/report.md (the description's\n"
-    "findings judged on the table) and DIR/figures/GROUP.png.\n"
+    "findings judged on the table), DIR/figures/GROUP.png and the panel figures, and DIR/kept/NAME\n"
+    "(what gather/keep names).\n"
     "Exit status: 0 every case done, 1 a case failed (the others ran), 2 bad input.\n";
 
 }  // namespace
@@ -42,7 +45,7 @@ int sweep_cli(const std::vector<std::string>& args, std::ostream& out, std::ostr
               int default_threads) {
   common::CliSpec spec("acst_sweep", "sweep description");
   spec.threads = true;
-  spec.flag_options = {"--retry-failed", "--list"};
+  spec.flag_options = {"--retry-failed", "--list", "--replot"};
   spec.value_options = {"--set", "--report"};
   InTurn in_turn;
   CaseDistributor& dist = where ? *where : in_turn;
@@ -94,6 +97,7 @@ int sweep_cli(const std::vector<std::string>& args, std::ostream& out, std::ostr
                               ? a
                               : common::shell_quoted(a));
   try {
+    if (cli.flags.count("--replot")) return dist.coordinator() ? replot_sweep(sweep, opt, o, e) : common::exit_done;
     return run_sweep(sweep, opt, dist, o, e);
   } catch (const std::exception& x) {
     e << "acst_sweep: " << x.what() << "\n";

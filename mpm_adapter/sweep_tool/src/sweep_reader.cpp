@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -217,6 +218,56 @@ KeepSpec read_keep(const json& k, const std::string& p) {
   return keep;
 }
 
+// gather/panels, checked against the cases made and the maps kept.
+std::vector<PanelFigure> read_panels(const json& a, const std::string& p, const SweepSpec& s) {
+  if (!a.is_array()) f::fail(p, "expected an array of figures");
+  if (!s.keep) f::fail(p, "panel figures are drawn from the kept results: give /gather/keep too");
+  std::set<std::string> names, case_names, groups;
+  for (const SweepCase& c : s.cases) {
+    case_names.insert(c.name);
+    groups.insert(c.groups.begin(), c.groups.end());
+  }
+  static const std::map<std::string, PanelKind> kinds{
+      {"load", PanelKind::load}, {"map", PanelKind::map}, {"histories", PanelKind::histories}, {"load_path", PanelKind::load_path}};
+  std::vector<PanelFigure> out;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::string q = p + "/" + std::to_string(i);
+    const json& e = a[i];
+    f::allow_keys(e, {"name", "title", "kind", "cases", "map", "column"}, q);
+    for (const char* k : {"name", "kind", "cases"})
+      if (!e.contains(k)) f::fail(q, std::string("'") + k + "' is required");
+    PanelFigure fig;
+    fig.name = common::require_plain_stem(f::string(e["name"], q + "/name"), q + "/name");
+    if (!names.insert(fig.name).second) f::fail(q + "/name", "a second figure named '" + fig.name + "'");
+    if (groups.count(fig.name)) f::fail(q + "/name", "'" + fig.name + "' is a group's figure already");
+    if (e.contains("title")) fig.title = f::string(e["title"], q + "/title");
+    const std::string kind = f::string(e["kind"], q + "/kind");
+    const auto k = kinds.find(kind);
+    if (k == kinds.end()) f::fail(q + "/kind", "'" + kind + "': expected load, map, histories or load_path");
+    fig.kind = k->second;
+    if (!e["cases"].is_array() || e["cases"].empty()) f::fail(q + "/cases", "expected a non-empty array of case names");
+    for (std::size_t m = 0; m < e["cases"].size(); ++m) {
+      const std::string c = f::string(e["cases"][m], q + "/cases/" + std::to_string(m));
+      if (!case_names.count(c)) f::fail(q + "/cases/" + std::to_string(m), "'" + c + "' names no case of this sweep");
+      fig.cases.push_back(c);
+    }
+    if (fig.kind == PanelKind::map) {
+      if (!e.contains("map")) f::fail(q, "a map figure needs 'map', one of /gather/keep/maps");
+      fig.map = f::string(e["map"], q + "/map");
+      if (std::find(s.keep->maps.begin(), s.keep->maps.end(), fig.map) == s.keep->maps.end())
+        f::fail(q + "/map", "'" + fig.map + "' is not among /gather/keep/maps");
+    } else if (e.contains("map")) {
+      f::fail(q + "/map", "only a figure of kind map takes 'map'");
+    }
+    if (e.contains("column")) {
+      if (fig.kind != PanelKind::histories) f::fail(q + "/column", "only a figure of kind histories takes 'column'");
+      fig.column = common::require_plain_stem(f::string(e["column"], q + "/column"), q + "/column");
+    }
+    out.push_back(std::move(fig));
+  }
+  return out;
+}
+
 SweepSpec sweep_from_document(const json& j, const std::string& file, const std::string& extra_set) {
   f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings"}, "");
   SweepSpec s;
@@ -227,7 +278,7 @@ SweepSpec sweep_from_document(const json& j, const std::string& file, const std:
   if (j.contains("description")) s.description = f::string(j["description"], "/description");
   if (j.contains("gather")) {
     const json& g = j["gather"];
-    f::allow_keys(g, {"load_at_S_over_B", "figures", "case_figures", "keep"}, "/gather");
+    f::allow_keys(g, {"load_at_S_over_B", "figures", "case_figures", "keep", "panels"}, "/gather");
     if (g.contains("keep")) s.keep = read_keep(g["keep"], "/gather/keep");
     if (g.contains("case_figures")) {
       const json& c = g["case_figures"];
@@ -323,6 +374,7 @@ SweepSpec sweep_from_document(const json& j, const std::string& file, const std:
     for (const SweepCase& c : s.cases) case_names.push_back(c.name);
     s.findings = read_findings(j["findings"], "/findings", case_names);
   }
+  if (j.contains("gather") && j["gather"].contains("panels")) s.panels = read_panels(j["gather"]["panels"], "/gather/panels", s);
   return s;
 }
 

@@ -19,6 +19,7 @@
 #include "acst_sweep/case_record.hpp"
 #include "acst_sweep/kept_results.hpp"
 #include "acst_sweep/sweep_case.hpp"
+#include "acst_sweep/sweep_figures.hpp"
 #include "acst_sweep/sweep_table.hpp"
 
 namespace acst::mpm {
@@ -223,6 +224,8 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
   if (sweep.keep)
     for (const SweepCase& c : sweep.cases)
       for (const std::string& w : keep_case_results(*sweep.keep, c, opt.output_dir)) warnings.push_back(w);
+  if (sweep.figures && opt.plot)  // drawn from the kept results, so after them
+    for (const std::string& w : write_panel_figures(sweep, opt.output_dir)) warnings.push_back(w);
   try {
     gather(sweep, plan.rows, opt);  // the report links the figures now there
   } catch (const std::exception& e) {
@@ -240,6 +243,40 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
   }
   out << "\ntable: " << (fs::path(opt.output_dir) / "table.md").string() << "\n";
   return done == sweep.cases.size() ? common::exit_done : common::exit_failed;
+}
+
+int replot_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, std::ostream& out, std::ostream& err) {
+  std::vector<ordered_json> rows;
+  std::optional<common::FolderLock> lock;
+  try {
+    common::require_own_folder(opt.output_dir, is_sweep_output_name);
+    const fs::path table = fs::path(opt.output_dir) / "table.json";
+    if (!fs::exists(table)) throw common::InputError("'" + table.string() + "' does not exist: nothing to re-plot");
+    lock.emplace(opt.output_dir, sweep_lock_file, "acst_sweep");
+    const ordered_json t = ordered_json::parse(common::read_input_file(table.string()), nullptr, false);
+    if (!t.is_object() || !t.contains("cases") || !t["cases"].is_array() || t["cases"].size() != sweep.cases.size())
+      throw common::InputError("'" + table.string() + "' does not list the " + std::to_string(sweep.cases.size()) +
+                               " cases of sweep '" + sweep.name + "'");
+    for (std::size_t i = 0; i < sweep.cases.size(); ++i) {
+      const ordered_json& r = t["cases"][i];
+      if (!r.is_object() || r.value("case", std::string()) != sweep.cases[i].name)
+        throw common::InputError("'" + table.string() + "': row " + std::to_string(i) + " is not case '" +
+                                 sweep.cases[i].name + "' of this description");
+      rows.push_back(r);
+    }
+  } catch (const std::exception& e) {
+    err << "acst_sweep: " << e.what() << "\n";
+    return common::exit_bad_input;
+  }
+  std::vector<std::string> warnings;
+  if (sweep.figures && opt.plot) {
+    for (const std::string& w : write_group_figures(sweep, rows, opt.output_dir)) warnings.push_back(w);
+    for (const std::string& w : write_panel_figures(sweep, opt.output_dir)) warnings.push_back(w);
+  }
+  write_sweep_report(sweep, rows, opt.output_dir, opt.report, opt.command);
+  for (const std::string& w : warnings) err << "acst_sweep: warning: " << w << "\n";
+  out << sweep.name << ": figures and report drawn again from " << opt.output_dir << "\n";
+  return common::exit_done;
 }
 
 }  // namespace acst::mpm

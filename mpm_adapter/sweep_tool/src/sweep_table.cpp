@@ -97,61 +97,6 @@ void write_sweep_table(const SweepSpec& sweep, const std::vector<ordered_json>& 
   common::write_file_atomically((fs::path(dir) / "table.json").string(), table.dump(2) + "\n");
 }
 
-std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::vector<ordered_json>& rows,
-                                             const std::string& dir) {
-  std::vector<std::string> warnings;
-  std::map<std::string, std::vector<std::size_t>> groups;
-  for (std::size_t i = 0; i < sweep.cases.size(); ++i)
-    for (const std::string& g : sweep.cases[i].groups) groups[g].push_back(i);
-  const fs::path figures = fs::path(dir) / "figures";
-  fs::create_directories(figures);
-  for (const auto& [group, members] : groups) {
-    std::ostringstream plot;
-    std::set<std::string> lab_curves;
-    for (std::size_t i : members) {
-      const std::string load_file = rows[i].value("load_file", "");
-      if (load_file.empty()) continue;
-      const fs::path csv = fs::absolute(fs::path(case_folder(dir, sweep.cases[i].name)) / load_file);
-      plot << (plot.tellp() > 0 ? ", " : "") << common::gp_quoted(csv.string())
-           << " using 'S_over_B':'q_kPa' with lines lw 2 title " << common::gp_quoted(sweep.cases[i].name);
-    }
-    for (std::size_t i : members) {
-      const OutputSpec& o = sweep.cases[i].scene.output;
-      if (o.lab_curve.empty() || !lab_curves.insert(o.lab_curve).second) continue;
-      plot << (plot.tellp() > 0 ? ", " : "") << common::gp_quoted(fs::absolute(o.lab_curve).string())
-           << " using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 title "
-           << common::gp_quoted(o.lab_label.empty() ? "lab data" : o.lab_label);
-    }
-    if (plot.tellp() == 0) continue;
-    std::ostringstream gp;
-    gp << "# gnuplot script written by acst_sweep for group " << group << " of sweep " << sweep.name << "\n"
-       << "set terminal pngcairo size 1100,800 font 'DejaVu Sans,12' noenhanced\n"
-       << "if (!exists('png')) png = " << common::gp_quoted(group + ".png") << "\nset output png\n"
-       << "set datafile separator ','\nset datafile commentschars '#'\nset datafile columnheaders\n"
-       << "set xlabel 'S/B'\nset ylabel 'q = V/B [kPa]'\nset grid\nset key top right\n"
-       << "set title " << common::gp_quoted("Sweep " + sweep.name + ", group " + group) << "\n"
-       << "plot " << plot.str() << "\n";
-    const std::string w = common::run_gnuplot(gp.str(), (figures / (group + ".gp")).string(), (figures / (group + ".png")).string());
-    if (!w.empty()) warnings.push_back("figure of group '" + group + "': " + w);
-  }
-  // The figures of each case the description asks for, beside the group figures.
-  for (const SweepCase& c : sweep.cases)
-    for (const std::string& name : sweep.case_figures) {
-      const fs::path from = fs::path(case_folder(dir, c.name)) / name;
-      if (!fs::exists(from)) continue;
-      fs::create_directories(figures / "cases");
-      std::error_code ec;
-      const fs::path to = figures / "cases" / (c.name + "_" + name), temporary = common::temporary_name(to.string());
-      fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
-      if (!ec) fs::rename(temporary, to, ec);
-      if (ec) {
-        warnings.push_back("cannot copy " + from.string() + ": " + ec.message());
-        fs::remove(temporary, ec);  // a copy cut short (a full disk) never takes the earlier one's place
-      }
-    }
-  return warnings;
-}
-
 void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>& rows, const std::string& dir,
                         const std::string& extra_report, const std::string& command) {
   std::size_t done = 0;
@@ -190,6 +135,10 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
     for (const std::string& g : groups) {
       if (!fs::exists(fs::path(dir) / "figures" / (g + ".png"))) continue;
       md += "- " + g + ": ![" + g + "](" + (figures / (g + ".png")).generic_string() + ")\n";
+    }
+    for (const PanelFigure& fig : sweep.panels) {
+      if (!fs::exists(fs::path(dir) / "figures" / (fig.name + ".png"))) continue;
+      md += "- " + fig.name + ": ![" + fig.name + "](" + (figures / (fig.name + ".png")).generic_string() + ")\n";
     }
     if (!sweep.case_figures.empty()) {
       md += "\n### Of each case\n\n| case |";

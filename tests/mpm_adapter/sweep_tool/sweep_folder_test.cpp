@@ -24,6 +24,7 @@
 #include "cli_capture.hpp"
 #include "lock_holder.hpp"
 #include "scratch.hpp"
+#include "sweep_runs.hpp"
 
 namespace acst::test::sweep_folder_test {
 namespace {
@@ -31,8 +32,12 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace acst::mpm;
+using sweep_runs::parse_error;
+using sweep_runs::read_json;
+using sweep_runs::sweep;
+using sweep_runs::write;
+const std::string& base_scene = sweep_runs::small_footing;
 
-const std::string base_scene = std::string(ACST_SOURCE_DIR) + "/tests/sweeps/small_footing.json";
 
 // Cases of the small footing stopped at S/B 0.005: a tenth of a second each in Release.
 std::string description(const std::string& cases) {
@@ -41,25 +46,9 @@ std::string description(const std::string& cases) {
 
 const std::string two_cases = R"([{"name": "a"}, {"name": "b", "set": {"/bodies/0/bedding_angle_deg": 90}}])";
 
-Cli sweep(const std::vector<std::string>& args) {
-  return run_cli([](const auto& a, auto& o, auto& e) { return sweep_cli(a, o, e); }, args);
-}
 
-fs::path write(const fs::path& file, const std::string& text) {
-  common::write_file_atomically(file.string(), text);
-  return file;
-}
 
-json read_json(const fs::path& file) { return json::parse(common::read_input_file(file.string())); }
 
-std::string parse_error(const std::string& text) {
-  try {
-    parse_sweep(text, "");
-  } catch (const common::InputError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
 
 // Runs nothing and records what would be handed out: past the folder's checks, or not.
 class NoWorkers : public CaseDistributor {

@@ -26,52 +26,34 @@
 #include "acst_sweep/sweep_runner.hpp"
 #include "cli_capture.hpp"
 #include "scratch.hpp"
+#include "sweep_runs.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace acst::mpm;
+using sweep_runs::data_rows;
+using sweep_runs::numbers_in;
+using sweep_runs::parse_error;
+using sweep_runs::relative_links;
+using sweep_runs::read_json;
+using sweep_runs::sweep;
+using sweep_runs::write;
+static const std::string& base_scene = sweep_runs::small_footing;
 
 namespace {
 
-const std::string base_scene = std::string(ACST_SOURCE_DIR) + "/tests/sweeps/small_footing.json";
 
 // A description around the small footing; `cases` is the JSON array of cases, `extra` more keys.
 std::string description(const std::string& cases, const std::string& extra = "") {
   return R"({"name": "t", "base": ")" + base_scene + R"(", "cases": )" + cases + (extra.empty() ? "" : ", " + extra) + "}";
 }
 
-std::string parse_error(const std::string& text) {
-  try {
-    parse_sweep(text, "");
-  } catch (const acst::common::InputError& e) {
-    return e.what();
-  }
-  return "accepted";
-}
 
 using acst::test::Cli;
 
-// The targets of a Markdown text's links and images that are not URLs, without their anchors.
-std::vector<std::string> relative_links(const std::string& markdown) {
-  std::vector<std::string> out;
-  const std::regex link(R"(\]\(([^)\s]+)\))");
-  for (auto it = std::sregex_iterator(markdown.begin(), markdown.end(), link); it != std::sregex_iterator(); ++it) {
-    const std::string target = (*it)[1].str();
-    if (target.find("://") == std::string::npos && target.front() != '#') out.push_back(target.substr(0, target.find('#')));
-  }
-  return out;
-}
 
-Cli sweep(const std::vector<std::string>& args) {
-  return acst::test::run_cli([](const auto& a, auto& o, auto& e) { return sweep_cli(a, o, e); }, args);
-}
 
-fs::path write(const fs::path& file, const std::string& text) {
-  acst::common::write_file_atomically(file.string(), text);
-  return file;
-}
 
-json read_json(const fs::path& file) { return json::parse(acst::common::read_input_file(file.string())); }
 
 // The table's rows without what may differ between two runs of the same cases (time, threads,
 // whether a case was resumed).
@@ -536,33 +518,6 @@ TEST(FirstPeak, NoneWhileTheLoadRisesOrWithinAWindowOfTheEnd) {
   EXPECT_FALSE(acst::mpm::first_peak({}, {}).has_value());
 }
 
-namespace {
-
-// The data rows of a CSV text (comment lines and the header left out).
-std::vector<std::string> data_rows(const std::string& text) {
-  std::vector<std::string> rows;
-  std::istringstream in(text);
-  bool header = true;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    rows.push_back(line);
-  }
-  return rows;
-}
-
-// The numbers of a CSV row.
-std::vector<double> numbers_in(const std::string& row) {
-  std::vector<double> v;
-  std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) v.push_back(std::stod(cell));
-  return v;
-}
-
-}  // namespace
 
 TEST(KeptResults, ARecordIsThinnedToItsRowsWithItsEndsAndPeak) {
   std::string text = "# a comment\nS_over_B,q_kPa\n";

@@ -33,6 +33,20 @@ struct KeepSpec {
   double map_width_over_B = 4.0, map_depth_over_B = 1.5;
 };
 
+// A figure of several cases drawn from their kept results (docs/sweeps.md, "Figures"):
+// `load`, one panel per case with its own lab curve; `map`, one panel per case of a kept map on
+// one colour scale, the footing drawn and a half domain mirrored; `histories`, one panel per
+// tracked point (A, B, C) with one curve of a history column per case; `load_path`, H against V.
+enum class PanelKind { load, map, histories, load_path };
+
+struct PanelFigure {
+  std::string name, title;  // figures/NAME.png; the title ("" : from what the cases share)
+  PanelKind kind = PanelKind::load;
+  std::vector<std::string> cases;
+  std::string map;          // kind map: one of the kept maps
+  std::string column = "N"; // kind histories: a column of the particle histories
+};
+
 struct SweepSpec {
   std::string name, description, file, text;
   std::vector<SweepCase> cases;
@@ -41,6 +55,7 @@ struct SweepSpec {
   std::vector<std::string> case_figures;       // files of each case copied to figures/cases/ for the report
   std::vector<Finding> findings;               // judged in report.md
   std::optional<KeepSpec> keep;                // gather/keep: compact results of each case
+  std::vector<PanelFigure> panels;             // gather/panels: figures drawn from the kept results
 };
 
 // Reads a sweep description (docs/sweeps.md, "The description"). Every case's scene is built and

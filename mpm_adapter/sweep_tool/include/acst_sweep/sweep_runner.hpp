@@ -52,6 +52,11 @@ struct SweepRunOptions {
 int run_sweep(const SweepSpec& sweep, const SweepRunOptions& options, CaseDistributor& where, std::ostream& out,
               std::ostream& err);
 
+// acst_sweep --replot: runs nothing; the figures and the report drawn again from the folder's
+// table.json (which must list this description's cases) and kept results. 0 when drawn, 2 when
+// the folder cannot be used.
+int replot_sweep(const SweepSpec& sweep, const SweepRunOptions& options, std::ostream& out, std::ostream& err);
+
 // acst_sweep's command line (the usage text says it all). `where`: MPI ranks when the tool runs
 // under mpirun; null: the cases in turn. `default_threads`: threads per case when --threads is
 // not given (0: the scene's, else all cores).

@@ -1,7 +1,7 @@
 #pragma once
 // The gathered outputs of a sweep (docs/sweeps.md, "The table"): the table of its cases'
-// rows as table.csv, table.md and table.json, and one figure per group overlaying the load curves
-// of its cases with the lab curves their scenes name.
+// rows as table.csv, table.md and table.json, and the report that judges the findings on it and
+// links the figures (sweep_figures.hpp).
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,10 +13,6 @@ namespace acst::mpm {
 // Writes the three tables into `dir`, each atomically. `rows[i]` is case i's row, in the order of
 // the description. Throws std::runtime_error naming a file that cannot be written.
 void write_sweep_table(const SweepSpec& sweep, const std::vector<nlohmann::ordered_json>& rows, const std::string& dir);
-
-// One PNG per group in dir/figures; returns the warnings (gnuplot missing or failed).
-std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::vector<nlohmann::ordered_json>& rows,
-                                             const std::string& dir);
 
 // report.md in `dir` (and a copy at `extra_report` when not empty, its figure links made relative
 // to its own folder): the description, every finding with its checks' numbers and verdict, the
