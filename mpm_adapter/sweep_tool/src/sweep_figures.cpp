@@ -123,6 +123,7 @@ std::string load_panels(const SweepSpec& sweep, const PanelFigure& fig, const st
       q_max = std::max(q_max, largest(lab.values("q_kPa"))), s_max = std::max(s_max, largest(lab.values("S_over_B")));
     }
   }
+  if (std::all_of(records.begin(), records.end(), [](const fs::path& r) { return r.empty(); })) return "";
   const auto [columns, rows] = layout(cases.size());
   std::string gp = script_head("load panels " + fig.name + " of sweep " + sweep.name, fig.name + ".png", 520 * columns,
                                400 * rows + 60);
@@ -179,6 +180,7 @@ std::string map_panels(const SweepSpec& sweep, const PanelFigure& fig, const std
     for (double v : table_of(files.back()).values("value"))
       if (std::isfinite(v)) all.push_back(v);
   }
+  if (all.empty()) return "";
   // One colour scale for every panel, from the 2nd to the 98th percentile of all the cells, so
   // that the few cells at a footing's corner do not wash the bands out.
   double lo = quantile(all, 0.02), hi = quantile(all, 0.98);
@@ -339,6 +341,7 @@ std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::
       plot << (plot.tellp() > 0 ? ", " : "") << common::gp_quoted(csv.string())
            << " using 'S_over_B':'q_kPa' with lines lw 2 title " << common::gp_quoted(labels.legends[m]);
     }
+    if (plot.tellp() == 0) continue;  // no case has a record: an earlier figure is left as it is
     for (std::size_t i : members) {
       const OutputSpec& o = sweep.cases[i].scene.output;
       if (o.lab_curve.empty() || !lab_curves.insert(o.lab_curve).second) continue;
@@ -346,7 +349,6 @@ std::vector<std::string> write_group_figures(const SweepSpec& sweep, const std::
            << " using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 title "
            << common::gp_quoted(o.lab_label.empty() ? "lab data" : o.lab_label);
     }
-    if (plot.tellp() == 0) continue;
     std::string gp = script_head("group " + group + " of sweep " + sweep.name, group + ".png", 1100, 800);
     gp += "set xlabel 'S/B [-]'\nset ylabel 'q = V/B [kPa]'\nset grid\nset key top right\n";
     gp += "set title " + common::gp_quoted("Sweep " + sweep.name + ", group " + group +

@@ -122,18 +122,75 @@ std::vector<Finding> read_findings(const json& j, const std::string& path, const
   return out;
 }
 
-CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows) {
+namespace {
+
+// How a difference d stands against its band w: beyond it either way, or within it. Without a
+// band (w = 0) only a difference of zero is within it, which a strict claim does not meet.
+enum class Side { above, below, within };
+Side side_of(double d, double w) { return d > w ? Side::above : d < -w ? Side::below : Side::within; }
+
+// A claim judged on an interval of values [x - u, x + u]: holds where all of it meets the claim,
+// fails where none does, within the band otherwise; `banded` false: the value alone decides.
+CheckStatus status_of_interval(bool all_meet, bool none_meets, bool value_meets, bool banded) {
+  if (!banded) return value_meets ? CheckStatus::holds : CheckStatus::fails;
+  return all_meet ? CheckStatus::holds : none_meets ? CheckStatus::fails : CheckStatus::within_band;
+}
+
+std::string band_text(const Band& b) {
+  return std::isnan(b.absolute) ? "; band +-" + number_text(100.0 * b.relative) + " %" : "; band +-" + number_text(b.absolute);
+}
+
+}  // namespace
+
+std::vector<Band> read_bands(const json& j, const std::string& path) {
+  if (!j.is_array()) f::fail(path, "expected an array of bands, one per column");
+  std::vector<Band> out;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string p = path + "/" + std::to_string(i);
+    f::allow_keys(j[i], {"column", "relative", "absolute", "source"}, p);
+    Band b;
+    if (!j[i].contains("column")) f::fail(p, "'column' is required");
+    b.column = f::string(j[i]["column"], p + "/column");
+    for (const Band& other : out)
+      if (other.column == b.column) f::fail(p + "/column", "a second band for '" + b.column + "'");
+    if (f::one_of(j[i], {"relative", "absolute"}, p) == "relative")
+      b.relative = f::number(j[i]["relative"], p + "/relative", {0.0, 10.0});
+    else
+      b.absolute = f::number(j[i]["absolute"], p + "/absolute", {0.0, 1e12});
+    if (!j[i].contains("source")) f::fail(p, "'source' is required: where the band was measured");
+    b.source = f::string(j[i]["source"], p + "/source");
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
+CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, const std::vector<Band>& bands) {
   CheckResult r;
+  const Band* band = nullptr;
+  for (const Band& b : bands)
+    if (b.column == c.columns[0]) band = &b;
+  const auto width = [&](double a, double b) { return band ? band->about(std::max(std::fabs(a), std::fabs(b))) : 0.0; };
+  // Steps a over b that must all be above (beyond the band) for the claim to hold.
+  const auto steps = [&](const std::vector<std::pair<double, double>>& pairs) {
+    bool all_above = true, any_below = false;
+    for (const auto& [a, b] : pairs) {
+      const Side s = side_of(a - b, width(a, b));
+      all_above = all_above && s == Side::above;
+      any_below = any_below || s == Side::below || (!band && s == Side::within);
+    }
+    return all_above ? CheckStatus::holds : any_below ? CheckStatus::fails : CheckStatus::within_band;
+  };
   bool missing = false;
   if (c.columns.size() == 2) {  // within each case, the first column above the second
-    bool all = true;
+    std::vector<std::pair<double, double>> pairs;
     for (const std::string& name : c.cases) {
       const double a = value_of(rows, name, c.columns[0]), b = value_of(rows, name, c.columns[1]);
       missing = missing || std::isnan(a) || std::isnan(b);
-      all = all && a > b;
+      pairs.emplace_back(a, b);
       r.numbers += (r.numbers.empty() ? "" : "; ") + shown_value(rows, name, a) + " vs " + number_text(b);
     }
-    r.status = missing ? CheckStatus::open : all ? CheckStatus::holds : CheckStatus::fails;
+    if (band) r.numbers += band_text(*band);
+    r.status = missing ? CheckStatus::open : steps(pairs);
     return r;
   }
   std::vector<double> v;
@@ -142,53 +199,77 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows) 
     missing = missing || std::isnan(v.back());
   }
   for (std::size_t k = 0; k < v.size(); ++k) r.numbers += (k ? ", " : "") + shown_value(rows, c.cases[k], v[k]);
-  bool holds = true;
+  CheckStatus status = CheckStatus::reported;
   switch (c.expect) {
     case Expectation::increasing:
     case Expectation::decreasing: {
-      const bool up = c.expect == Expectation::increasing;
-      for (std::size_t k = 1; k < v.size(); ++k) holds = holds && (up ? v[k] > v[k - 1] : v[k] < v[k - 1]);
+      std::vector<std::pair<double, double>> pairs;
+      for (std::size_t k = 1; k < v.size(); ++k)
+        pairs.push_back(c.expect == Expectation::increasing ? std::make_pair(v[k], v[k - 1]) : std::make_pair(v[k - 1], v[k]));
+      status = steps(pairs);
+      // With a band a trend holds where its whole change, first case to last, is beyond the band
+      // and no step goes the other way beyond it: steps each within the band do not undo a trend.
+      if (band && status == CheckStatus::within_band) {
+        const auto [a, b] = c.expect == Expectation::increasing ? std::make_pair(v.back(), v.front()) : std::make_pair(v.front(), v.back());
+        const Side whole = side_of(a - b, width(a, b));
+        status = whole == Side::above ? CheckStatus::holds : whole == Side::below ? CheckStatus::fails : CheckStatus::within_band;
+      }
       break;
     }
     case Expectation::similar:
     case Expectation::different: {
       const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-      const double spread = *hi / *lo - 1.0;
-      holds = *lo > 0 && (c.expect == Expectation::similar ? spread <= c.within : spread > c.within);
+      const double spread = *hi / *lo - 1.0, u = width(*hi, *hi) / *lo;  // the band, in the spread's terms
+      const bool similar = c.expect == Expectation::similar;
+      const auto meets = [&](double s) { return similar ? s <= c.within : s > c.within; };
+      status = *lo > 0 ? status_of_interval(meets(spread + (similar ? u : -u)), !meets(spread - (similar ? u : -u)),
+                                            meets(spread), band != nullptr)
+                       : CheckStatus::fails;
       r.numbers += "; spread " + number_text(100.0 * spread) + " % (limit " + number_text(100.0 * c.within) + " %)";
       break;
     }
-    case Expectation::greater: holds = v[0] > v[1]; break;
+    case Expectation::greater: status = steps({{v[0], v[1]}}); break;
     case Expectation::ratio: {
-      const double ratio = v[0] / v[1];
-      holds = std::fabs(ratio - c.value) <= c.within;
+      const double ratio = v[0] / v[1], off = std::fabs(ratio - c.value);
+      const double u = band ? std::fabs(ratio) * width(v[0], v[1]) / std::max(std::fabs(v[0]), std::fabs(v[1])) : 0.0;
+      status = status_of_interval(off + u <= c.within, off - u > c.within, off <= c.within, band != nullptr);
       r.numbers += "; ratio " + number_text(ratio) + " (expected " + number_text(c.value) + " +- " + number_text(c.within) + ")";
       break;
     }
     case Expectation::near: {
       const double tolerance = std::isnan(c.within) ? c.within_abs : c.within * std::fabs(c.value);
-      for (double x : v) holds = holds && std::fabs(x - c.value) <= tolerance;
+      // Every value near: all of each one's band within the tolerance holds; one whose whole band
+      // lies beyond it fails.
+      bool all = true, any_beyond = false, value = true;
+      for (double x : v) {
+        const double off = std::fabs(x - c.value), u = width(x, x);
+        all = all && off + u <= tolerance, value = value && off <= tolerance;
+        any_beyond = any_beyond || off - u > tolerance;
+      }
+      status = status_of_interval(all, any_beyond, value, band != nullptr);
       r.numbers += "; expected " + number_text(c.value) + " +- " + number_text(tolerance);
       break;
     }
     case Expectation::report: break;
   }
-  r.status = missing ? CheckStatus::open
-             : c.expect == Expectation::report ? CheckStatus::reported
-             : holds ? CheckStatus::holds : CheckStatus::fails;
+  if (band) r.numbers += band_text(*band);
+  r.status = missing ? CheckStatus::open : status;
   return r;
 }
 
 std::string verdict(const std::vector<CheckResult>& results) {
-  std::size_t held = 0, failed = 0, open = 0;
+  std::size_t held = 0, failed = 0, open = 0, within = 0;
   for (const CheckResult& r : results) {
     held += r.status == CheckStatus::holds;
     failed += r.status == CheckStatus::fails;
     open += r.status == CheckStatus::open;
+    within += r.status == CheckStatus::within_band;
   }
   if (open > 0) return "open";
-  if (failed == 0) return held > 0 ? "reproduced" : "reported";
-  return held == 0 ? "not reproduced" : "partly reproduced";
+  const std::string where = within > 0 ? " where decided" : "";
+  if (failed == 0 && held == 0) return within > 0 ? "not decided within the band" : "reported";
+  if (failed == 0) return "reproduced" + where;
+  return held == 0 ? "not reproduced" + where : "partly reproduced";
 }
 
 }  // namespace acst::mpm

@@ -269,7 +269,7 @@ std::vector<PanelFigure> read_panels(const json& a, const std::string& p, const 
 }
 
 SweepSpec sweep_from_document(const json& j, const std::string& file, const std::string& extra_set) {
-  f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings"}, "");
+  f::allow_keys(j, {"name", "description", "base", "set", "cases", "gather", "findings", "bands"}, "");
   SweepSpec s;
   s.file = file;
   s.text = j.dump();
@@ -374,6 +374,7 @@ SweepSpec sweep_from_document(const json& j, const std::string& file, const std:
     for (const SweepCase& c : s.cases) case_names.push_back(c.name);
     s.findings = read_findings(j["findings"], "/findings", case_names);
   }
+  if (j.contains("bands")) s.bands = read_bands(j["bands"], "/bands");
   if (j.contains("gather") && j["gather"].contains("panels")) s.panels = read_panels(j["gather"]["panels"], "/gather/panels", s);
   return s;
 }

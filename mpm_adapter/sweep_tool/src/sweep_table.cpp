@@ -1,5 +1,6 @@
 #include "acst_sweep/sweep_table.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -113,11 +114,21 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
           " cases done. Verdicts are judged on the table below by the checks the description states. A check reads the "
           "cases that ran to their end and those that failed after their peak (the record up to the failure); it is "
           "open while a case it reads has not (docs/sweeps.md, \"Findings\").\n\n";
+    if (!sweep.bands.empty()) {
+      md += "## Bands\n\nA check is judged against the band of its column: the spread the method itself leaves in "
+            "that column (cell, loading speed, round-off). It holds or fails only where the whole band agrees; "
+            "otherwise it is *within the band* and says nothing either way.\n\n| column | band | measured in |\n|---|---|---|\n";
+      for (const Band& b : sweep.bands)
+        md += "| " + markdown_cell(b.column) + " | +-" +
+              (std::isnan(b.absolute) ? markdown_cell(ordered_json(100.0 * b.relative)) + " %" : markdown_cell(ordered_json(b.absolute))) +
+              " | " + markdown_cell(b.source) + " |\n";
+      md += "\n";
+    }
     if (!sweep.findings.empty()) md += "## Findings\n\n";
     for (std::size_t i = 0; i < sweep.findings.size(); ++i) {
       const Finding& fd = sweep.findings[i];
       std::vector<CheckResult> results;
-      for (const FindingCheck& c : fd.checks) results.push_back(judge(c, rows));
+      for (const FindingCheck& c : fd.checks) results.push_back(judge(c, rows, sweep.bands));
       md += "### " + std::to_string(i + 1) + ". " + common::one_line(fd.claim) + ": **" + verdict(results) + "**\n\n";
       md += "| check | values | result |\n|---|---|---|\n";
       for (std::size_t k = 0; k < fd.checks.size(); ++k) {

@@ -38,6 +38,12 @@ std::string error(const std::string& text) {
   return "accepted";
 }
 
+std::vector<Band> bands(const std::string& text) { return read_bands(json::parse(text), "/bands"); }
+
+std::string banded(const std::string& check_text, const std::string& bands_text) {
+  return name_of(judge(check(check_text), rows(), bands(bands_text)).status);
+}
+
 }  // namespace
 
 TEST(SweepFindings, EachKindOfCheckIsJudgedOnTheRows) {
@@ -68,6 +74,68 @@ TEST(SweepFindings, EachKindOfCheckIsJudgedOnTheRows) {
   EXPECT_NE(r.numbers.find("a 300, b 200; ratio 1.5"), std::string::npos) << r.numbers;
 }
 
+// q 300, 200, 100 and r 100, 104, 96, judged against bands whose answers follow from the numbers.
+TEST(SweepFindings, AChecksVerdictStandsOnlyWhereItsWholeBandAgrees) {
+  const std::string q10 = R"([{"column": "q", "relative": 0.1, "source": "s"}])";
+  const std::string q40 = R"([{"column": "q", "relative": 0.4, "source": "s"}])";
+  const std::string r5 = R"([{"column": "r", "absolute": 5, "source": "s"}])";
+  const std::string q70 = R"([{"column": "q", "relative": 0.7, "source": "s"}])";
+  // Steps of 100 against bands of 30 and 20 (10 % of the larger): beyond them; of 40 %: 120 and
+  // 80, the first step within its band but the whole fall of 200 beyond its 120; of 70 %: the
+  // whole fall within its 210.
+  EXPECT_EQ(banded(R"({"expect": "decreasing", "cases": ["a", "b", "c"], "column": "q"})", q10), "holds");
+  EXPECT_EQ(banded(R"({"expect": "increasing", "cases": ["a", "b", "c"], "column": "q"})", q10), "fails");
+  EXPECT_EQ(banded(R"({"expect": "decreasing", "cases": ["a", "b", "c"], "column": "q"})", q40), "holds");
+  EXPECT_EQ(banded(R"({"expect": "increasing", "cases": ["a", "b", "c"], "column": "q"})", q40), "fails");  // 200 -> 100 is 100 > 80 the wrong way
+  EXPECT_EQ(banded(R"({"expect": "decreasing", "cases": ["a", "b", "c"], "column": "q"})", q70), "within the band");
+  // 300, 100, 200: the step up of 100 is within its 140, the whole fall of 100 within its 210.
+  EXPECT_EQ(banded(R"({"expect": "decreasing", "cases": ["a", "c", "b"], "column": "q"})", q70), "within the band");
+  // ... and with 10 %: the step up of 100 beyond its 20 undoes the trend.
+  EXPECT_EQ(banded(R"({"expect": "decreasing", "cases": ["a", "c", "b"], "column": "q"})", q10), "fails");
+  EXPECT_EQ(banded(R"({"expect": "greater", "cases": ["a", "b"], "column": "q"})", q40), "within the band");
+  // A band on another column changes nothing.
+  EXPECT_EQ(banded(R"({"expect": "greater", "cases": ["a", "b"], "column": "q"})", r5), "holds");
+  // r: spread 8.3 %, its band 5/96 = 5.2 %: similar within 9 % needs 8.3 + 5.2 <= 9, within 2 % fails
+  // only beyond 8.3 - 5.2 = 3.1 %.
+  EXPECT_EQ(banded(R"({"expect": "similar", "within": 0.09, "cases": ["a", "b", "c"], "column": "r"})", r5), "within the band");
+  EXPECT_EQ(banded(R"({"expect": "similar", "within": 0.14, "cases": ["a", "b", "c"], "column": "r"})", r5), "holds");
+  EXPECT_EQ(banded(R"({"expect": "similar", "within": 0.02, "cases": ["a", "b", "c"], "column": "r"})", r5), "fails");
+  EXPECT_EQ(banded(R"({"expect": "different", "within": 0.02, "cases": ["a", "b", "c"], "column": "r"})", r5), "holds");
+  EXPECT_EQ(banded(R"({"expect": "different", "within": 0.05, "cases": ["a", "b", "c"], "column": "r"})", r5), "within the band");
+  // a/b = 1.5 against 1.4 +- 0.09: 0.1 off; the band moves the ratio by 1.5 x 10 % = 0.15.
+  EXPECT_EQ(banded(R"({"expect": "ratio", "value": 1.4, "within": 0.09, "cases": ["a", "b"], "column": "q"})", q10), "within the band");
+  EXPECT_EQ(banded(R"({"expect": "ratio", "value": 1.1, "within": 0.09, "cases": ["a", "b"], "column": "q"})", q10), "fails");
+  // a = 300 near 310 +- 12.4 (4 %): 10 off, its band 30: neither all within nor all beyond.
+  EXPECT_EQ(banded(R"({"expect": "near", "value": 310, "within": 0.04, "cases": ["a"], "column": "q"})", q10), "within the band");
+  EXPECT_EQ(banded(R"({"expect": "near", "value": 310, "within": 0.2, "cases": ["a"], "column": "q"})", q10), "holds");
+  EXPECT_EQ(banded(R"({"expect": "near", "value": 400, "within_abs": 20, "cases": ["a"], "column": "q"})", q10), "fails");
+  // Two columns compared within each case take the first column's band.
+  EXPECT_EQ(banded(R"({"expect": "greater", "cases": ["a", "c"], "columns": ["left", "right"]})",
+                   R"([{"column": "left", "absolute": 1.5, "source": "s"}])"),
+            "within the band");
+  const CheckResult r = judge(check(R"({"expect": "greater", "cases": ["a", "b"], "column": "q"})"), rows(), bands(q10));
+  EXPECT_NE(r.numbers.find("band +-10 %"), std::string::npos) << r.numbers;
+}
+
+TEST(SweepFindings, BadBandsNameTheirPath) {
+  const auto error_of = [](const std::string& text) {
+    try {
+      bands(text);
+    } catch (const acst::common::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(error_of(R"([{"relative": 0.1, "source": "s"}])").find("/bands/0: 'column' is required"), std::string::npos);
+  EXPECT_NE(error_of(R"([{"column": "q", "relative": -0.1, "source": "s"}])").find("/bands/0/relative"), std::string::npos);
+  EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1, "absolute": 1, "source": "s"}])").find("/bands/0"), std::string::npos);
+  EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1}])").find("'source' is required"), std::string::npos);
+  EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1, "source": "s"}, {"column": "q", "absolute": 1, "source": "s"}])")
+                .find("/bands/1/column"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"column": "q"})").find("/bands"), std::string::npos);
+}
+
 TEST(SweepFindings, TheVerdictFollowsItsChecks) {
   const auto results = [](std::vector<CheckStatus> statuses) {
     std::vector<CheckResult> out;
@@ -81,6 +149,10 @@ TEST(SweepFindings, TheVerdictFollowsItsChecks) {
   EXPECT_EQ(verdict(results({S::holds, S::fails})), "partly reproduced");
   EXPECT_EQ(verdict(results({S::holds, S::open})), "open");
   EXPECT_EQ(verdict(results({S::reported})), "reported");
+  EXPECT_EQ(verdict(results({S::within_band, S::within_band})), "not decided within the band");
+  EXPECT_EQ(verdict(results({S::holds, S::within_band})), "reproduced where decided");
+  EXPECT_EQ(verdict(results({S::fails, S::within_band})), "not reproduced where decided");
+  EXPECT_EQ(verdict(results({S::holds, S::fails, S::within_band})), "partly reproduced");
 }
 
 TEST(SweepFindings, BadChecksNameTheirPath) {

@@ -54,6 +54,7 @@ struct SweepSpec {
   bool figures = true;                         // one overlay of the load curves per group
   std::vector<std::string> case_figures;       // files of each case copied to figures/cases/ for the report
   std::vector<Finding> findings;               // judged in report.md
+  std::vector<Band> bands;                     // the method's own spread of a column, for the findings
   std::optional<KeepSpec> keep;                // gather/keep: compact results of each case
   std::vector<PanelFigure> panels;             // gather/panels: figures drawn from the kept results
 };

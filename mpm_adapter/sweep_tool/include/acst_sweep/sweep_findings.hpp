@@ -2,6 +2,7 @@
 // Findings a sweep tests (docs/sweeps.md, "Findings"): claims of a study written as checks on the
 // gathered table (a trend along cases, two cases or two columns compared, a ratio or a value
 // against an expected one), judged on the rows and written as a markdown report.
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -37,17 +38,34 @@ struct Finding {
   std::vector<FindingCheck> checks;
 };
 
+// The spread a column's value keeps from the method itself (the cell, the loading speed, round-off:
+// what the converged footing leaves), measured elsewhere and cited in `source`: a difference
+// between two values within it says nothing (docs/sweeps.md, "Findings").
+struct Band {
+  std::string column, source;
+  double relative = std::numeric_limits<double>::quiet_NaN();  // of the larger value's size
+  double absolute = std::numeric_limits<double>::quiet_NaN();
+  // The band about values of size `size`.
+  double about(double size) const { return std::isnan(absolute) ? relative * std::fabs(size) : absolute; }
+};
+
+// Reads "bands" at `path` (one per column). Throws InputError.
+std::vector<Band> read_bands(const nlohmann::json& j, const std::string& path);
+
 // Reads "findings" at `path`; every case named must be one of `case_names`. Throws InputError.
 std::vector<Finding> read_findings(const nlohmann::json& j, const std::string& path,
                                    const std::vector<std::string>& case_names);
 
 // What a check says about the rows: open, a value is missing (the case has not run, failed, or
-// its record does not reach the column); reported, no verdict asked.
-enum class CheckStatus { holds, fails, open, reported };
+// its record does not reach the column); reported, no verdict asked; within band, the
+// difference that decides lies inside the column's band, so the rows cannot tell.
+enum class CheckStatus { holds, fails, open, reported, within_band };
 
 // The names in the report.
 inline constexpr common::Named<CheckStatus> check_status_names[] = {
-    {"holds", CheckStatus::holds}, {"fails", CheckStatus::fails}, {"open", CheckStatus::open}, {"reported", CheckStatus::reported}};
+    {"holds", CheckStatus::holds},       {"fails", CheckStatus::fails},
+    {"open", CheckStatus::open},         {"reported", CheckStatus::reported},
+    {"within the band", CheckStatus::within_band}};
 
 inline const char* name_of(CheckStatus s) { return common::name_in(check_status_names, s); }
 
@@ -56,9 +74,12 @@ struct CheckResult {
   CheckStatus status = CheckStatus::open;
   std::string numbers;
 };
-CheckResult judge(const FindingCheck& check, const std::vector<nlohmann::ordered_json>& rows);
+// Judged against the band of the check's (first) column when `bands` has one.
+CheckResult judge(const FindingCheck& check, const std::vector<nlohmann::ordered_json>& rows,
+                  const std::vector<Band>& bands = {});
 
-// "reproduced", "not reproduced", "partly reproduced" or "open", from its checks' results.
+// "reproduced", "not reproduced", "partly reproduced", "not decided within the band" (no check
+// holds or fails beyond its band) or "open", from its checks' results.
 std::string verdict(const std::vector<CheckResult>& results);
 
 }  // namespace acst::mpm
