@@ -69,6 +69,10 @@ FindingCheck read_check(const json& j, const std::string& p, const std::vector<s
       need(one_column && !std::isnan(c.value) && (std::isnan(c.within) != std::isnan(c.within_abs)),
            "one column, 'value' and one of 'within' (relative) or 'within_abs'");
       break;
+    case Expectation::bedding_factor:
+      need(c.cases.size() >= 2 && one_column && !std::isnan(c.value) == !std::isnan(c.within_abs) && std::isnan(c.within),
+           "two or more cases, one column and, to judge a, both 'value' and 'within_abs'");
+      break;
     case Expectation::report: break;
   }
   if (c.expect != Expectation::greater && c.columns.size() != 1) f::fail(p + "/columns", "two columns go with 'greater' only");
@@ -134,6 +138,14 @@ Side side_of(double d, double w) { return d > w ? Side::above : d < -w ? Side::b
 CheckStatus status_of_interval(bool all_meet, bool none_meets, bool value_meets, bool banded) {
   if (!banded) return value_meets ? CheckStatus::holds : CheckStatus::fails;
   return all_meet ? CheckStatus::holds : none_meets ? CheckStatus::fails : CheckStatus::within_band;
+}
+
+// The least-squares a of 1 - q_k/q_0 = a sin^2(alpha_k) over the cases after the first (at
+// bedding 0): a = sum s_k (1 - q_k/q_0) / sum s_k^2, s_k = sin^2(alpha_k).
+double sin2_factor(const std::vector<double>& q, const std::vector<double>& s) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t k = 1; k < q.size(); ++k) num += s[k] * (1.0 - q[k] / q[0]), den += s[k] * s[k];
+  return num / den;
 }
 
 std::string band_text(const Band& b) {
@@ -248,6 +260,38 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
       }
       status = status_of_interval(all, any_beyond, value, band != nullptr);
       r.numbers += "; expected " + number_text(c.value) + " +- " + number_text(tolerance);
+      break;
+    }
+    case Expectation::bedding_factor: {
+      std::vector<double> s;
+      for (const std::string& name : c.cases) {
+        const double alpha = value_of(rows, name, "bedding_angle_deg") * M_PI / 180.0;
+        missing = missing || std::isnan(alpha);
+        s.push_back(std::pow(std::sin(alpha), 2));
+      }
+      double den = 0.0;
+      for (std::size_t k = 1; k < s.size(); ++k) den += s[k] * s[k];
+      if (missing || s[0] > 1e-12 || !(den > 0.0) || !(v[0] > 0.0)) {
+        r.numbers += "; needs bedding_angle_deg of every case, the first at 0 deg and another not at 0 or 180";
+        missing = true;
+        break;
+      }
+      // a falls as any q_k grows and rises with q_0, so the band's ends are its corners.
+      const double a = sin2_factor(v, s);
+      std::vector<double> to_high = v, to_low = v;  // the q that give a's largest and smallest value
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const double u = k == 0 ? width(v[k], v[k]) : -width(v[k], v[k]);
+        to_high[k] += u, to_low[k] -= u;
+      }
+      const double a_high = sin2_factor(to_high, s), a_low = sin2_factor(to_low, s);
+      r.numbers += "; i_alpha = 1 - a sin^2(alpha): a = " + number_text(a);
+      if (band) r.numbers += " (" + number_text(a_low) + " to " + number_text(a_high) + " over the band)";
+      if (!std::isnan(c.value)) {
+        status = status_of_interval(std::max(std::fabs(a_low - c.value), std::fabs(a_high - c.value)) <= c.within_abs,
+                                    a_low - c.value > c.within_abs || c.value - a_high > c.within_abs,
+                                    std::fabs(a - c.value) <= c.within_abs, band != nullptr);
+        r.numbers += ", expected " + number_text(c.value) + " +- " + number_text(c.within_abs);
+      }
       break;
     }
     case Expectation::report: break;

@@ -146,9 +146,10 @@ TEST(SweepFigures, PanelsAreDrawnFromTheKeptResultsAndCanBeDrawnAgainWithoutTheC
 
   // The report shows every figure, and its links resolve.
   const std::string report = text_of(fs::path(out) / "report.md");
-  if (acst::common::gnuplot_available())
+  if (acst::common::gnuplot_available()) {
     for (const char* f : {"loads", "bands", "pressures", "path"})
       EXPECT_NE(report.find("figures/" + std::string(f) + ".png"), std::string::npos) << f;
+  }
   for (const std::string& link : relative_links(report)) EXPECT_TRUE(fs::exists(fs::path(out) / link)) << link;
 
   // Without its case folders the sweep draws the same panels again from what it kept.

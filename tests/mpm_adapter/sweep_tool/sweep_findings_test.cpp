@@ -2,6 +2,8 @@
 // answer is known, the verdict from its checks, and the description's errors with their path.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "acst_common/input_error.hpp"
 #include "acst_sweep/sweep_findings.hpp"
 
@@ -117,6 +119,42 @@ TEST(SweepFindings, AChecksVerdictStandsOnlyWhereItsWholeBandAgrees) {
   EXPECT_NE(r.numbers.find("band +-10 %"), std::string::npos) << r.numbers;
 }
 
+// Bedding series whose factor is known in closed form: q(alpha) = 1000 (1 - a sin^2 alpha).
+TEST(SweepFindings, TheBeddingFactorIsFittedWithItsBand) {
+  const double pi = 3.14159265358979323846;
+  const auto series = [&](double a, const std::vector<double>& angles) {
+    std::vector<ordered_json> out;
+    for (std::size_t k = 0; k < angles.size(); ++k) {
+      const double s = std::sin(angles[k] * pi / 180.0);
+      out.push_back({{"case", names[k]}, {"status", "done"}, {"bedding_angle_deg", angles[k]}, {"q", 1000.0 * (1.0 - a * s * s)}});
+    }
+    return out;
+  };
+  const auto judged = [&](const std::string& extra, const std::vector<ordered_json>& rows, const std::string& band_text = "[]") {
+    return judge(check(R"({"expect": "bedding_factor", "cases": ["a", "b", "c", "d"], "column": "q")" + extra + "}"), rows, bands(band_text));
+  };
+  // Four beddings on the exact form: a = 0.2 back, reported.
+  const CheckResult exact = judged("", series(0.2, {0, 30, 60, 90}));
+  EXPECT_EQ(name_of(exact.status), "reported");
+  EXPECT_NE(exact.numbers.find("a = 0.2"), std::string::npos) << exact.numbers;
+  // 0 and 90 only (the rest at 0 carry nothing): a = 1 - q(90)/q(0) = 0.1; over a 10 % band its
+  // ends are 1 - 900 (1 + 0.1) / (1000 (1 - 0.1)) = -0.1 and 1 - 900 (1 - 0.1) / (1000 (1 + 0.1)) = 0.264.
+  const std::vector<ordered_json> pair = series(0.1, {0, 0, 0, 90});
+  const std::string q10 = R"([{"column": "q", "relative": 0.1, "source": "s"}])";
+  const CheckResult wide = judged("", pair, q10);
+  EXPECT_NE(wide.numbers.find("a = 0.1 (-0.1 to 0.264 over the band)"), std::string::npos) << wide.numbers;
+  EXPECT_EQ(name_of(judged(R"(, "value": 0.12, "within_abs": 0.05)", pair).status), "holds");
+  EXPECT_EQ(name_of(judged(R"(, "value": 0.3, "within_abs": 0.05)", pair).status), "fails");
+  EXPECT_EQ(name_of(judged(R"(, "value": 0.12, "within_abs": 0.05)", pair, q10).status), "within the band");
+  EXPECT_EQ(name_of(judged(R"(, "value": 0.08, "within_abs": 0.2)", pair, q10).status), "holds");    // 0.18 and 0.184 off
+  EXPECT_EQ(name_of(judged(R"(, "value": 0.6, "within_abs": 0.05)", pair, q10).status), "fails");    // 0.264 < 0.55
+  // A series that does not start at bedding 0, or a case without its angle, leaves it open.
+  EXPECT_EQ(name_of(judged("", series(0.1, {20, 45, 70, 90})).status), "open");
+  std::vector<ordered_json> no_angle = pair;
+  no_angle[3].erase("bedding_angle_deg");
+  EXPECT_EQ(name_of(judged("", no_angle).status), "open");
+}
+
 TEST(SweepFindings, BadBandsNameTheirPath) {
   const auto error_of = [](const std::string& text) {
     try {
@@ -167,6 +205,8 @@ TEST(SweepFindings, BadChecksNameTheirPath) {
       {R"({"expect": "ratio", "value": 1, "cases": ["a", "b"], "column": "q"})", "'ratio' needs"},
       {R"({"expect": "near", "value": 1, "within": 0.1, "within_abs": 2, "cases": ["a"], "column": "q"})", "one of 'within'"},
       {R"({"expect": "report", "cases": ["a", "b"], "columns": ["q", "r"]})", "two columns go with 'greater' only"},
+      {R"({"expect": "bedding_factor", "value": 0.1, "cases": ["a", "b"], "column": "q"})", "'bedding_factor' needs"},
+      {R"({"expect": "bedding_factor", "within": 0.1, "cases": ["a", "b"], "column": "q"})", "'bedding_factor' needs"},
       {R"({"expect": "greater", "cases": ["a", "b"]})", "one of column, columns is required"},
       {R"({"expect": "greater", "cases": ["a", "b"], "column": "q", "colour": 1})", "/findings/0/checks/0/colour: unknown key"},
   };

@@ -13,13 +13,15 @@
 namespace acst::mpm {
 
 // What a check expects of the values it reads (docs/sweeps.md, "Findings").
-enum class Expectation { increasing, decreasing, similar, different, greater, ratio, near, report };
+// bedding_factor: the anisotropy factor i_alpha = 1 - a sin^2(alpha) fitted to q(alpha)/q(0) of
+// the cases (the first at bedding 0, the angles from the table's bedding_angle_deg).
+enum class Expectation { increasing, decreasing, similar, different, greater, ratio, near, report, bedding_factor };
 
 // The names in the sweep description ("expect") and the report.
 inline constexpr common::Named<Expectation> expectation_names[] = {
     {"increasing", Expectation::increasing}, {"decreasing", Expectation::decreasing}, {"similar", Expectation::similar},
     {"different", Expectation::different},   {"greater", Expectation::greater},       {"ratio", Expectation::ratio},
-    {"near", Expectation::near},             {"report", Expectation::report}};
+    {"near", Expectation::near},             {"report", Expectation::report},         {"bedding_factor", Expectation::bedding_factor}};
 
 inline const char* name_of(Expectation e) { return common::name_in(expectation_names, e); }
 
