@@ -219,8 +219,8 @@ def write_table_and_figures(out, rows):
 
 
 def plot_lengths(out, every):
-    """V85.6's q_ult against the cell on the graded grid for each internal length (0: the local
-    model), at the study's speed and CFL and m = 1: the length's sensitivity."""
+    """V85.6's largest and first-peak load against the cell on the graded grid for each internal
+    length (0: the local model), at the study's speed and CFL and m = 1: the length's sensitivity."""
     def length_of(r):
         return 0.085 if r["internal_length_m"] == "default" else float(r["internal_length_m"])
     chosen = [r for r in every if r["case"].startswith("V85p6") and r["grid"] == "graded" and r["set"] == "acst"
@@ -228,14 +228,17 @@ def plot_lengths(out, every):
     lengths = sorted({length_of(r) for r in chosen})
     if not lengths:
         return
-    data = [sorted((float(r["cell_m"]), float(r["q_ult_kPa"])) for r in chosen if length_of(r) == l) for l in lengths]
-    lines = ["set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h_by_length.png'))}",
-             "set grid", "set key bottom right", "set xlabel 'cell size h [m]'", "set ylabel 'q_ult [kPa]'",
-             "set xrange [0:0.1]", "set yrange [1000:1700]",
-             "set title 'V85.6, graded grid: the largest load against the cell for each internal length l (S/B up to 0.25)'",
-             "plot " + ", ".join(f"'-' using 1:2 with linespoints lw 2 pt 7 title {gp_quoted('local (l = 0)' if l == 0 else f'l = {l:g} m')}"
-                                for l in lengths)]
-    lines += ["\n".join(f"{h} {q}" for h, q in pts) + "\ne" for pts in data] + [""]
+    lines = ["set terminal pngcairo size 1400,560 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h_by_length.png'))}",
+             "set multiplot layout 1,2", "set grid", "set key bottom right", "set xlabel 'cell size h [m]'",
+             "set xrange [0:0.1]", "set yrange [1000:1700]"]
+    for column, what in (("q_ult_kPa", "the largest load"), ("q_first_peak_kPa", "the first peak")):
+        data = [sorted((float(r["cell_m"]), float(r[column])) for r in chosen if length_of(r) == l and r.get(column)) for l in lengths]
+        lines += [f"set ylabel {gp_quoted(column.replace('_kPa', '') + ' [kPa]')}",
+                  f"set title {gp_quoted(f'V85.6, graded grid: {what} against the cell for each internal length l')}",
+                  "plot " + ", ".join(f"'-' using 1:2 with linespoints lw 2 pt 7 title {gp_quoted('local (l = 0)' if l == 0 else f'l = {l:g} m')}"
+                                     for l in lengths)]
+        lines += ["\n".join(f"{h} {q}" for h, q in pts) + "\ne" for pts in data]
+    lines += ["unset multiplot", ""]
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
 
 
