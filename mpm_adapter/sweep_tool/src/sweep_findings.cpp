@@ -264,18 +264,19 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
     }
     case Expectation::bedding_factor: {
       std::vector<double> s;
+      bool angles = true;
       for (const std::string& name : c.cases) {
         const double alpha = value_of(rows, name, "bedding_angle_deg") * M_PI / 180.0;
-        missing = missing || std::isnan(alpha);
+        angles = angles && !std::isnan(alpha);
         s.push_back(std::pow(std::sin(alpha), 2));
       }
       double den = 0.0;
       for (std::size_t k = 1; k < s.size(); ++k) den += s[k] * s[k];
-      if (missing || s[0] > 1e-12 || !(den > 0.0) || !(v[0] > 0.0)) {
+      if (!angles || s[0] > 1e-12 || !(den > 0.0)) {
         r.numbers += "; needs bedding_angle_deg of every case, the first at 0 deg and another not at 0 or 180";
         missing = true;
-        break;
       }
+      if (missing || !(v[0] > 0.0)) break;
       // a falls as any q_k grows and rises with q_0, so the band's ends are its corners.
       const double a = sin2_factor(v, s);
       std::vector<double> to_high = v, to_low = v;  // the q that give a's largest and smallest value
@@ -283,7 +284,8 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
         const double u = k == 0 ? width(v[k], v[k]) : -width(v[k], v[k]);
         to_high[k] += u, to_low[k] -= u;
       }
-      const double a_high = sin2_factor(to_high, s), a_low = sin2_factor(to_low, s);
+      const double a_high = sin2_factor(to_high, s);
+      const double a_low = to_low[0] > 0.0 ? sin2_factor(to_low, s) : -std::numeric_limits<double>::infinity();  // q_0's band reaches 0
       r.numbers += "; i_alpha = 1 - a sin^2(alpha): a = " + number_text(a);
       if (band) r.numbers += " (" + number_text(a_low) + " to " + number_text(a_high) + " over the band)";
       if (!std::isnan(c.value)) {
