@@ -230,7 +230,7 @@ def plot_lengths(out, every):
         return
     lines = ["set terminal pngcairo size 1400,560 noenhanced", f"set output {gp_quoted(os.path.join(out, 'q_ult_against_h_by_length.png'))}",
              "set multiplot layout 1,2", "set grid", "set key bottom right", "set xlabel 'cell size h [m]'",
-             "set xrange [0:0.1]", "set yrange [1000:1700]"]
+             "set xrange [0:0.1]", "set yrange [900:1700]"]
     for column, what in (("q_ult_kPa", "the largest load"), ("q_first_peak_kPa", "the first peak")):
         data = [sorted((float(r["cell_m"]), float(r[column])) for r in chosen if length_of(r) == l and r.get(column)) for l in lengths]
         lines += [f"set ylabel {gp_quoted(column.replace('_kPa', '') + ' [kPa]')}",
