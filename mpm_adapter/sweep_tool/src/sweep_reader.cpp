@@ -173,7 +173,14 @@ void set_at_pointer(json& scene, const std::string& pointer, const json& value, 
   }
   if (ptr.empty()) f::fail(where, "the pointer '' would replace the whole scene");
   const json::json_pointer parent = ptr.parent_pointer();
-  if (!scene.contains(parent)) f::fail(where, "'" + pointer + "': the scene has no " + parent.to_string());
+  // contains() throws, not answers, for a token that cannot index an array (such as '' or a
+  // number past size_t): both mean the scene has no such member.
+  bool found = false;
+  try {
+    found = scene.contains(parent);
+  } catch (const json::exception&) {
+  }
+  if (!found) f::fail(where, "'" + pointer + "': the scene has no " + parent.to_string());
   json& holder = scene.at(parent);
   const std::string last = ptr.back();
   if (value.is_null()) {  // null removes the member (as in a JSON merge patch)

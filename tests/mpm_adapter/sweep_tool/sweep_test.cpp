@@ -170,6 +170,9 @@ TEST(SweepDescription, BadDescriptionsNameTheirJsonPath) {
       {description(R"([{"name": "a", "colour": 1}])"), "/cases/0/colour: unknown key"},
       {description(R"([{"name": "a", "set": {"/footing/nothing/x": 1}}])"), "/cases/0/set: '/footing/nothing/x': the scene has no /footing/nothing"},
       {description(R"([{"name": "a", "set": {"/bodies/3/density": 1}}])"), "the scene has no /bodies/3"},
+      // Tokens that cannot index an array (found by fuzz_sweep_description): refused, not thrown.
+      {description(R"([{"name": "a", "set": {"/bodies//density": 1}}])"), "the scene has no /bodies/"},
+      {description(R"([{"name": "a", "set": {"/bodies/99999999999999999999999/density": 1}}])"), "the scene has no /bodies/99999999999999999999999"},
       {description(R"([{"name": "a", "set": {"/bodies/1": {}}}])"), "/bodies has elements 0 to 0"},
       {description(R"([{"name": "a", "set": {"footing": 1}}])"), "is not a JSON pointer"},
       {description(R"([{"name": "a", "set": {"/bodies/0/bedding_angle_deg": "steep"}}])"),
