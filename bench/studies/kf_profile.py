@@ -25,8 +25,8 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from calibration_runs import run_prediction  # noqa: E402
-from footing_common import gp_quoted, value_at  # noqa: E402
-from lt88_fabric_closing import STRAINS, closing_run, stress_ratio_curves  # noqa: E402
+from footing_common import gp_quoted  # noqa: E402
+from lt88_fabric_closing import closing_run, closings, stress_ratio_curves  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CALIBRATION = os.path.join(ROOT, "data", "calibration")
@@ -91,17 +91,6 @@ def table1_biases(parameter_set, out, tool, k_f):
             "table1_bias_deg_sigma3_ge_9": round(mean(high), 2)}
 
 
-def closings(parameter_set, out, tool, k_f):
-    c = stress_ratio_curves(closing_run(k_f, os.path.join(out, tag_of(k_f)), parameter_set, tool))
-    row = {}
-    for low in (0, 30):
-        for source, k in (("simulated", 2), ("measured", 1)):
-            gaps = [value_at(c[low][0], c[low][k], e) - value_at(c[90][0], c[90][k], e) for e in STRAINS]
-            row[f"{source}_gap_{low}_90_at_6pct"] = round(gaps[0], 3)
-            row[f"{source}_closing_{low}_90"] = round(gaps[1] / gaps[0], 3)
-    return row
-
-
 def figure(path, table):
     pts = lambda key: "\n".join(f"{r['k_f']} {r[key]}" for r in table) + "\ne"
     m = table[0]
@@ -143,7 +132,8 @@ def main():
         row.update({f"fitted_{fold}": round(pooled(report, set(ids)), 3) for fold, ids in folds.items()})
         row.update({k: round(values[k], 4) for k in REPORTED if k in values})
         row.update(table1_biases(parameter_set, a.out, a.tool, k_f))
-        row.update(closings(parameter_set, a.out, a.tool, k_f))
+        closing = closing_run(k_f, os.path.join(a.out, tag_of(k_f)), parameter_set, a.tool)
+        row.update(closings(stress_ratio_curves(closing)))
         print(json.dumps(row), flush=True)
         table.append(row)
     with open(os.path.join(a.out, "profile.csv"), "w", newline="") as f:

@@ -57,6 +57,20 @@ def stress_ratio_curves(report):
     return out
 
 
+def closings(curves):
+    """The simulated and measured gaps in sigma1/sigma3 between omega 0 (and 30) and 90 at 6 and
+    12 % axial strain and their closing ratios gap(12 %) / gap(6 %), from stress_ratio_curves."""
+    row = {}
+    for source, k in (("simulated", 2), ("measured", 1)):
+        for low in (0, 30):
+            gaps = [value_at(curves[low][0], curves[low][k], e) - value_at(curves[90][0], curves[90][k], e)
+                    for e in STRAINS]
+            row[f"{source}_gap_{low}_90_at_6pct"] = round(gaps[0], 4)
+            row[f"{source}_gap_{low}_90_at_12pct"] = round(gaps[1], 4)
+            row[f"{source}_closing_{low}_90"] = round(gaps[1] / gaps[0], 3)
+    return row
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "results", "lt88_fabric_closing"))
@@ -69,14 +83,8 @@ def main():
     for k_f in a.k_f:
         if not 0.0 <= k_f <= 100.0:
             sys.exit(f"k_f {k_f:g} is out of range; allowed: [0, 100]")
-        c = stress_ratio_curves(closing_run(k_f, a.out, os.path.abspath(a.set), a.tool))
         row = {"k_f": k_f}
-        for source, k in (("simulated", 2), ("measured", 1)):
-            for low in (0, 30):
-                gaps = [value_at(c[low][0], c[low][k], e) - value_at(c[90][0], c[90][k], e) for e in STRAINS]
-                row[f"{source}_gap_{low}_90_at_6pct"] = round(gaps[0], 4)
-                row[f"{source}_gap_{low}_90_at_12pct"] = round(gaps[1], 4)
-                row[f"{source}_closing_{low}_90"] = round(gaps[1] / gaps[0], 3)
+        row.update(closings(stress_ratio_curves(closing_run(k_f, a.out, os.path.abspath(a.set), a.tool))))
         table.append(row)
         print(json.dumps(row), flush=True)
     with open(os.path.join(a.out, "closing.csv"), "w", newline="") as f:
