@@ -13,15 +13,17 @@ and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
-        [,window=B][,set=acst|isotropic][,m=1]   (TEST V85.6 or H86.7; largest: the graded grid's largest cell,
-        default 4 h; window: its window's half-width and depth in footing widths, default 3; set: the
-        delivered ACST set, or the delivered isotropic one, data/parameters/toyoura_isotropic_calibrated.json;
+        [,window=B][,set=acst|isotropic|FILE.json][,m=1]   (TEST V85.6 or H86.7; largest: the graded grid's
+        largest cell, default 4 h; window: its window's half-width and depth in footing widths, default 3;
+        set: the delivered ACST set, the delivered isotropic one (data/parameters/toyoura_isotropic_calibrated.json),
+        or a material file relative to the repository, whose plain stem joins the case's name;
         m: the regularisation's over-nonlocal factor)
 """
 import argparse
 import csv
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -44,7 +46,13 @@ def parse_case(text):
     if c["grid"] not in ("uniform", "graded"):
         sys.exit(f"{text}: grid is uniform or graded")
     if c["set"] not in SETS:
-        sys.exit(f"{text}: set is one of {', '.join(SETS)}")
+        path = os.path.join(ROOT, c["set"])
+        stem = os.path.splitext(os.path.basename(c["set"]))[0]
+        if not (c["set"].endswith(".json") and os.path.isfile(path) and re.fullmatch(r"[A-Za-z0-9_.-]+", stem)):
+            sys.exit(f"{text}: set is one of {', '.join(SETS)} or an existing material file FILE.json (a plain stem) "
+                     "relative to the repository")
+        SETS[stem] = path
+        c["set"] = stem
     for key in ("largest", "window"):
         if key in c and c["grid"] != "graded":
             sys.exit(f"{text}: {key} needs grid=graded")

@@ -10,7 +10,9 @@ measured phi, over all rows and over sigma3' >= 9 kPa, where the membrane's shar
 the closing of Lam & Tatsuoka's bedding gap between 6 and 12 % axial strain
 (lt88_fabric_closing.py), the measure that turns the fabric most.
 
-  python3 bench/studies/kf_profile.py [--out DIR] [--tool build/calibration/acst_fit] K_F ...
+  python3 bench/studies/kf_profile.py [--out DIR] [--fit DESCRIPTION.json] [--tool build/calibration/acst_fit] K_F ...
+(--fit: the description to profile; default the delivered one. With toyoura_acst_closing_fit.json
+the fit itself holds the closings, "The closing in the fit".)
 Writes OUT/profile.csv (k_f, the fit's objective and each fold's pooled RMS/scale as fitted, the
 fitted values, the Table 1 biases, the closings) and OUT/profile.png.
 """
@@ -39,17 +41,19 @@ def tag_of(k_f):
     return f"k_f_{k_f:g}".replace(".", "p")
 
 
-def fit_at(k_f, out, tool):
-    """The delivered description fitted with k_f fixed: (report dict, the Tatsuoka set's path)."""
-    with open(FIT) as f:
+def fit_at(k_f, out, tool, description=FIT):
+    """The description fitted with k_f fixed: (report dict, its folds, the Tatsuoka set's path)."""
+    with open(description) as f:
         d = json.load(f)
+    here = os.path.dirname(os.path.abspath(description))
+    absolute = lambda name: os.path.normpath(os.path.join(here, name))
     for e in d["experiments"]:
-        e["data"] = os.path.normpath(os.path.join(CALIBRATION, e["data"]))
+        e["data"] = [absolute(n) for n in e["data"]] if isinstance(e["data"], list) else absolute(e["data"])
     d["material"]["parameters"]["k_f"] = k_f
     del d["parameters"]["k_f"]
     folds = d.pop("cross_validation")["folds"]
     d["name"] = tag_of(k_f)
-    d["description"] = f"The delivered description with k_f held at {k_f:g} (bench/studies/kf_profile.py)."
+    d["description"] = f"{os.path.basename(description)} with k_f held at {k_f:g} (bench/studies/kf_profile.py)."
     directory = os.path.join(out, tag_of(k_f), "fit")
     d["output"] = dict(d["output"], directory=directory)
     os.makedirs(os.path.dirname(directory), exist_ok=True)
@@ -91,15 +95,16 @@ def table1_biases(parameter_set, out, tool, k_f):
             "table1_bias_deg_sigma3_ge_9": round(mean(high), 2)}
 
 
-def figure(path, table):
+def figure(path, table, title, closing_fitted):
     pts = lambda key: "\n".join(f"{r['k_f']} {r[key]}" for r in table) + "\ne"
     m = table[0]
     gp = ["set terminal pngcairo size 1500,500 noenhanced", f"set output {gp_quoted(path)}", "set grid",
-          "set multiplot layout 1,3 title 'The delivered fit with k_f held (Toyoura sand, ACST)'",
+          f"set multiplot layout 1,3 title {gp_quoted(title)}",
           "set xlabel 'k_f (the fabric rate, held)'",
           "set ylabel 'objective (sum of weighted squares)'", "set title 'the fit'",
           "plot '-' using 1:2 with linespoints lw 2 pt 7 notitle", pts("objective"),
-          "set ylabel 'gap(12 %) / gap(6 %) in sigma1/sigma3'", "set title 'Lam & Tatsuoka bedding gap closing (not fitted)'",
+          "set ylabel 'gap(12 %) / gap(6 %) in sigma1/sigma3'",
+          f"set title 'Lam & Tatsuoka bedding gap closing{'' if closing_fitted else ' (not fitted)'}'",
           "set key bottom left",
           "plot '-' using 1:2 with linespoints lw 2 pt 7 title 'omega 0 - 90', "
           "'-' using 1:2 with linespoints lw 2 pt 5 title 'omega 30 - 90', "
@@ -118,6 +123,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(ROOT, "results", "kf_profile"))
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
+    ap.add_argument("--fit", default=FIT, help="the fit description to profile (default: the delivered one)")
     ap.add_argument("k_f", nargs="+", type=float)
     a = ap.parse_args()
     a.out = os.path.abspath(a.out)
@@ -125,7 +131,7 @@ def main():
     for k_f in a.k_f:
         if not 0.0 <= k_f <= 40.0:
             sys.exit(f"k_f {k_f:g} is out of range; allowed: [0, 40] (the fit's bounds)")
-        report, folds, parameter_set = fit_at(k_f, a.out, a.tool)
+        report, folds, parameter_set = fit_at(k_f, a.out, a.tool, os.path.abspath(a.fit))
         values = {p["label"]: p["value"] for p in report["parameters"]}
         row = {"k_f": k_f, "objective": round(report["objective"]["sum_of_squares"], 5),
                "fit_s": round(report["time"]["total_s"], 1)}
@@ -140,7 +146,10 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(table[0]))
         w.writeheader()
         w.writerows(table)
-    figure(os.path.join(a.out, "profile.png"), table)
+    which = "the delivered fit" if os.path.abspath(a.fit) == FIT else os.path.basename(a.fit)
+    with open(a.fit) as f:
+        closing_fitted = any(e.get("test") == "gap_closing" for e in json.load(f)["experiments"])
+    figure(os.path.join(a.out, "profile.png"), table, f"{which} with k_f held (Toyoura sand, ACST)", closing_fitted)
 
 
 if __name__ == "__main__":

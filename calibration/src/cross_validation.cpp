@@ -112,6 +112,7 @@ const char* axis_unit(Axis axis) {
     case Axis::stress: break;
     case Axis::volumetric: return "e_v %";
     case Axis::phi: return "phi deg";
+    case Axis::closing: return "closing";
   }
   return "stress";
 }

@@ -133,7 +133,10 @@ void read_table_columns(const json& e, const KeyPath& key_path, const driver::La
   if (x.bedding_column == "omega_deg" && lab.column("omega_deg").empty()) x.bedding_column.clear();
 }
 
+ExperimentSpec read_gap_closing(const json& j, const std::string& path, const json& defaults, const std::string& base_dir);
+
 ExperimentSpec read_experiment(const json& j, const std::string& path, const json& defaults, const std::string& base_dir) {
+  if (j.contains("test") && j["test"] == name_of(TestType::gap_closing)) return read_gap_closing(j, path, defaults, base_dir);
   f::allow_keys(j, {"id", "data", "test", "group", "sigma3_kPa", "void_ratio", "void_ratio_at_kPa",
                     "bedding_angle_deg", "b", "strain_range_pct", "strain_increment_pct", "max_cutbacks", "weight", "fit",
                     "stress_measure", "rows", "columns", "peak_search_strain_pct", "description"},
@@ -163,6 +166,7 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
     const std::string name = f::string(e["test"], key_path("test"));
     const auto test = common::value_in(test_type_names, name);
     if (!test) f::fail(key_path("test"), "unknown test type '" + name + "' (allowed: " + common::names_in(test_type_names) + ")");
+    if (is_gap_closing(*test)) f::fail(key_path("test"), "a gap_closing test is named in the experiment itself, not in /defaults");
     x.test = *test;
   } else {
     const std::string kind = lab.text("kind").substr(0, lab.text("kind").find(' '));
@@ -261,6 +265,56 @@ ExperimentSpec read_experiment(const json& j, const std::string& path, const jso
       x.peak_search_strain_pct = f::number(e["peak_search_strain_pct"], key_path("peak_search_strain_pct"), {0.5, 50.0}, "%");
     for (const char* k : {"strain_range_pct", "fit", "stress_measure"})
       if (j.contains(k)) f::fail(path + "/" + k, "not used by table tests (the peak is searched up to peak_search_strain_pct)");
+  }
+  return x;
+}
+
+// A gap_closing test: two lab curves, each run as a curve experiment of its own file's kind and
+// conditions with this experiment's group and run settings; one value is compared, the closing
+// ratio of the gap in sigma1'/sigma3' (first minus second) between two axial strains.
+ExperimentSpec read_gap_closing(const json& j, const std::string& path, const json& defaults, const std::string& base_dir) {
+  f::allow_keys(j, {"id", "test", "data", "at_axial_strain_pct", "scale", "weight", "group", "void_ratio_at_kPa",
+                    "strain_increment_pct", "max_cutbacks", "description"},
+                path);
+  ExperimentSpec x;
+  x.path = path;
+  x.test = TestType::gap_closing;
+  if (!j.contains("id")) f::fail(path + "/id", "required for a gap_closing test (its two data files give no one name)");
+  x.id = common::require_plain_stem(f::string(j["id"], path + "/id"), path + "/id");
+  if (!j.contains("data") || !j["data"].is_array() || j["data"].size() != 2)
+    f::fail(path + "/data", "required: [FIRST, SECOND], the two lab curves whose gap in sigma1'/sigma3' (first minus second) closes");
+  if (!j.contains("at_axial_strain_pct"))
+    f::fail(path + "/at_axial_strain_pct", "required: [FROM, TO], the axial strains in % the gap is taken at");
+  const auto at = f::numbers(j["at_axial_strain_pct"], path + "/at_axial_strain_pct", 2, "the two axial strains in %");
+  if (!(at[0] > 0.0 && at[0] < at[1] && at[1] <= 50.0))
+    f::fail(path + "/at_axial_strain_pct", "needs 0 < FROM < TO <= 50 %; got [" + f::shown(at[0]) + ", " + f::shown(at[1]) + "]");
+  x.gap_from_pct = at[0];
+  x.gap_to_pct = at[1];
+  if (j.contains("scale")) x.closing_scale = f::number(j["scale"], path + "/scale", {0.0, 100.0, true, false});
+  if (j.contains("weight")) x.weight = f::number(j["weight"], path + "/weight", {0.0, 1e6, false, false});
+  // The keys both tests share; the rest of /defaults (strain ranges, axes) belongs to curve fits.
+  json shared = json::object(), shared_defaults = json::object();
+  for (const char* k : {"group", "void_ratio_at_kPa", "strain_increment_pct", "max_cutbacks"}) {
+    if (j.contains(k)) shared[k] = j[k];
+    else if (defaults.contains(k)) shared_defaults[k] = defaults[k];
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    json t = shared;
+    t["data"] = j["data"][i];
+    t["id"] = x.id + (i == 0 ? "_first" : "_second");
+    t["fit"] = {"stress"};
+    t["strain_range_pct"] = {0.0, 1e9};  // every point: the closing reads the curve where it needs it
+    const std::string dp = path + "/data/" + std::to_string(i);
+    if (!t["data"].is_string()) f::fail(dp, "expected the lab curve's file name (a string)");
+    ExperimentSpec test;
+    try {
+      test = read_experiment(t, path, shared_defaults, base_dir);
+    } catch (const common::InputError& e) {
+      f::fail(dp, "the test '" + t["data"].get<std::string>() + "': " + e.what());
+    }
+    if (is_table_test(test.test)) f::fail(dp, "a gap_closing test compares two lab curves, not tables");
+    x.group = test.group;
+    x.gap_tests.push_back(std::move(test));
   }
   return x;
 }

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <thread>
+#include <tuple>
 
 #include "acst/material.hpp"
 #include "acst_common/interpolate.hpp"
@@ -28,6 +29,7 @@ double absolute_scale_floor(Axis axis, StressMeasure measure) {
     case Axis::stress: return measure == StressMeasure::q_kPa ? 1.0 : 0.1;
     case Axis::volumetric: return 0.2;
     case Axis::phi: return 1.0;
+    case Axis::closing: break;  // a closing's scale is the description's (/scale)
   }
   return 0.1;
 }
@@ -42,6 +44,16 @@ double series_scale(const std::vector<double>& measured, Axis axis, StressMeasur
     big = std::max(big, std::abs(v));
   }
   return std::max({hi - lo, 0.05 * big, absolute_scale_floor(axis, measure)});
+}
+
+double gap_closing(const std::vector<double>& first_eps_a, const std::vector<double>& first_ratio,
+                   const std::vector<double>& second_eps_a, const std::vector<double>& second_ratio, double from_pct,
+                   double to_pct) {
+  auto gap = [&](double at) {
+    return common::interpolate(first_eps_a, first_ratio, at) - common::interpolate(second_eps_a, second_ratio, at);
+  };
+  const double opened = gap(from_pct), left = gap(to_pct);
+  return opened != 0.0 ? left / opened : NAN;  // NaN also where either curve does not reach a strain
 }
 
 double friction_angle_deg(const Sym& stress) {
@@ -82,6 +94,30 @@ json scene_json(const FitSpec& spec, const ExperimentSpec& x, TestType test, dou
   return scene;
 }
 
+// The closing of a gap_closing experiment's two lab curves, each read where it has a stress ratio.
+double measured_closing(const ExperimentSpec& x) {
+  using common::fields::shown;
+  std::vector<double> eps_a[2], ratio[2];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const std::string& file = x.gap_tests[i].data_file;
+    const driver::LabCurve curve = driver::read_lab_curve(file);
+    std::tie(eps_a[i], ratio[i]) = common::finite_samples(curve.column("eps_a_pct"), curve.column("stress_ratio"));
+    if (ratio[i].empty() || !std::is_sorted(eps_a[i].begin(), eps_a[i].end()) || eps_a[i].front() > x.gap_from_pct ||
+        eps_a[i].back() < x.gap_to_pct)
+      throw common::InputError(x.path + "/at_axial_strain_pct: the stress_ratio points of '" + file + "' " +
+                               (ratio[i].empty() ? std::string("are missing")
+                                                 : "span " + shown(eps_a[i].front()) + " to " + shown(eps_a[i].back()) +
+                                                       " % of axial strain") +
+                               "; both curves must hold " + shown(x.gap_from_pct) + " and " + shown(x.gap_to_pct) +
+                               " %, with strains in increasing order");
+  }
+  const double closing = gap_closing(eps_a[0], ratio[0], eps_a[1], ratio[1], x.gap_from_pct, x.gap_to_pct);
+  if (!std::isfinite(closing))
+    throw common::InputError(x.path + "/data: the two lab curves have no gap in sigma1'/sigma3' at " + shown(x.gap_from_pct) +
+                             " %: the closing is undefined");
+  return closing;
+}
+
 driver::ElementScene build_scene(const json& j, const ExperimentSpec& x, const std::string& name) {
   try {
     return driver::parse_scene(j.dump(), "", name);
@@ -111,7 +147,9 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
     const ExperimentSpec& x = spec.experiments[k];
     const double w = experiment_weight(spec, k);
     const bool table = is_table_test(x.test);
-    const driver::LabCurve lab = table ? driver::read_commented_csv(x.data_file, true) : driver::read_lab_curve(x.data_file);
+    const driver::LabCurve lab = is_gap_closing(x.test) ? driver::LabCurve{}  // reads its two files below
+                                 : table                 ? driver::read_commented_csv(x.data_file, true)
+                                                         : driver::read_lab_curve(x.data_file);
     // `run`: the experiment with the conditions this run starts from (a table row's own).
     auto add_test_run = [&](int row, const ExperimentSpec& run, double b, double bedding, const json& j, long increments) {
       TestRun s;
@@ -127,7 +165,21 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       runs_of_[k].push_back(test_runs_.size());
       test_runs_.push_back(std::move(s));
     };
-    if (table) {
+    if (is_gap_closing(x.test)) {
+      // Each test runs a little past the second strain.
+      for (const ExperimentSpec& t : x.gap_tests) {
+        const double to = x.gap_to_pct + 2.0 * t.strain_increment_pct;
+        const int n = run_increments(to, t.strain_increment_pct, t);
+        add_test_run(-1, t, t.b, t.bedding_angle_deg, scene_json(spec, t, t.test, t.b, t.bedding_angle_deg, to, n), n);
+      }
+      Series closing;
+      closing.axis = Axis::closing;
+      closing.x = {x.gap_to_pct};
+      closing.measured = {measured_closing(x)};
+      closing.scale = x.closing_scale;
+      closing.point_weight = w;
+      series_[k].push_back(closing);
+    } else if (table) {
       Series phi;
       phi.axis = Axis::phi;
       const std::vector<double> measured = lab.column(x.phi_column);
@@ -309,8 +361,20 @@ double Problem::simulated(std::size_t k, const Series& s, std::size_t i,
     const TestRunOutcome& o = *outcomes[runs_of_[k][i]];
     return o.ok ? o.peak_phi_deg : NAN;
   }
+  if (s.axis == Axis::closing) {
+    const TestRunOutcome &a = *outcomes[runs_of_[k][0]], &b = *outcomes[runs_of_[k][1]];
+    const ExperimentSpec& x = spec_.experiments[k];
+    return a.ok && b.ok ? gap_closing(a.eps_a_pct, a.stress, b.eps_a_pct, b.stress, x.gap_from_pct, x.gap_to_pct) : NAN;
+  }
   const TestRunOutcome& o = *outcomes[runs_of_[k].front()];
   return o.ok ? common::interpolate(o.eps_a_pct, s.axis == Axis::stress ? o.stress : o.eps_v_pct, s.x[i]) : NAN;
+}
+
+double Problem::normalised_error(const Series& s, std::size_t i, double simulated) const {
+  const double e = (simulated - s.measured[i]) / s.scale, penalty = spec_.optimizer.penalty;
+  if (!std::isfinite(e)) return penalty;
+  // A closing whose simulated gap nearly vanishes at the first strain is a ratio without bound.
+  return s.axis == Axis::closing ? std::clamp(e, -penalty, penalty) : e;
 }
 
 void Problem::assemble(const std::vector<const TestRunOutcome*>& outcomes, Eigen::VectorXd& r) const {
@@ -318,10 +382,8 @@ void Problem::assemble(const std::vector<const TestRunOutcome*>& outcomes, Eigen
   Eigen::Index at = 0;
   for (std::size_t k = 0; k < series_.size(); ++k)
     for (const Series& s : series_[k])
-      for (std::size_t i = 0; i < s.x.size(); ++i, ++at) {
-        const double e = (simulated(k, s, i, outcomes) - s.measured[i]) / s.scale;
-        r[at] = std::sqrt(s.point_weight) * (std::isfinite(e) ? e : spec_.optimizer.penalty);
-      }
+      for (std::size_t i = 0; i < s.x.size(); ++i, ++at)
+        r[at] = std::sqrt(s.point_weight) * normalised_error(s, i, simulated(k, s, i, outcomes));
 }
 
 std::vector<Eigen::VectorXd> Problem::residuals(const std::vector<Eigen::VectorXd>& thetas) const {

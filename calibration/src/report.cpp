@@ -9,9 +9,11 @@
 
 #include "acst_common/files.hpp"
 #include "acst_common/gnuplot.hpp"
+#include "acst_common/interpolate.hpp"
 #include "acst_common/name_table.hpp"
 #include "acst_common/png_file.hpp"
 #include "acst_common/result_folder.hpp"
+#include "acst_driver/lab_data.hpp"
 #include "acst_driver/number_format.hpp"
 #include "acst_driver/output.hpp"
 
@@ -40,6 +42,7 @@ std::string fmt(double v, const char* f = "%.4g") {
 std::string axis_title(const ExperimentSpec& x, Axis axis) {
   switch (axis) {
     case Axis::phi: return "peak friction angle [deg]";
+    case Axis::closing: return "sigma_1/sigma_3 [-]";
     case Axis::volumetric: return "e_v [%] (contraction +)";
     case Axis::stress: break;
   }
@@ -48,11 +51,17 @@ std::string axis_title(const ExperimentSpec& x, Axis axis) {
 
 // The gnuplot commands of one panel of experiment k; `dir` is where its CSV files are, seen from
 // the script.
-std::string panel(const Problem& problem, std::size_t k, const Series& s, std::size_t index, const std::string& dir) {
+std::string panel(const Problem& problem, std::size_t k, const Series& s, std::size_t index, const std::string& dir,
+                  const std::vector<const TestRunOutcome*>& view) {
   const ExperimentSpec& x = problem.spec().experiments[k];
   const std::string points = common::gp_quoted(dir + x.id + "_points.csv");
   std::ostringstream g;
-  g << "set title " << common::gp_quoted(x.id + " (" + name_of(x.test) + ", " + name_of(s.axis) + ")") << " noenhanced\n";
+  const std::string title =
+      s.axis == Axis::closing
+          ? x.id + ": gap(" + fmt(x.gap_to_pct) + " %) / gap(" + fmt(x.gap_from_pct) + " %) lab " + fmt(s.measured.front(), "%.3f") +
+                ", fit " + fmt(problem.simulated(k, s, 0, view), "%.3f")
+          : x.id + " (" + name_of(x.test) + ", " + name_of(s.axis) + ")";
+  g << "set title " << common::gp_quoted(title) << " noenhanced\n";
   if (s.axis == Axis::phi) {
     // Against the void ratio where the rows have their own, else the bedding angle.
     const bool by_density = !x.void_ratio_column.empty();
@@ -62,6 +71,18 @@ std::string panel(const Problem& problem, std::size_t k, const Series& s, std::s
       << "plot " << points << " using " << xcol << ":6:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 7 ps 1.3 lc variable title 'lab (TC, PSC, TE)', \\\n"
       << "     " << points << " using " << xcol << ":7:(($3<0.1)?1:(($3>0.9)?3:2)) with points pt 6 ps 2 lw 2 lc variable title 'model'\n"
       << "set xrange [*:*]\n";
+    return g.str();
+  }
+  if (s.axis == Axis::closing) {
+    // Both tests' curves, simulated and measured, with the two strains the gap is taken at.
+    const std::string curves = common::gp_quoted(dir + x.id + ".csv"), lab = common::gp_quoted(dir + x.id + "_lab.csv");
+    g << "set xlabel 'axial strain [%]'\nset ylabel " << common::gp_quoted(axis_title(x, s.axis)) << "\nset key bottom right\n";
+    for (double at : {x.gap_from_pct, x.gap_to_pct}) g << "set arrow from " << at << ", graph 0 to " << at << ", graph 1 nohead dt 2\n";
+    g << "plot " << curves << " using 2:($1==0?$3:1/0) with lines lw 2 lc rgb '#1f77b4' title 'fit, first', \\\n"
+      << "     " << curves << " using 2:($1==1?$3:1/0) with lines lw 2 lc rgb '#ff7f0e' title 'fit, second', \\\n"
+      << "     " << lab << " using 2:($1==0?$3:1/0) with points pt 7 ps 0.8 lc rgb '#1f77b4' title 'lab, first', \\\n"
+      << "     " << lab << " using 2:($1==1?$3:1/0) with points pt 5 ps 0.8 lc rgb '#ff7f0e' title 'lab, second'\n"
+      << "unset arrow\nset key top left\n";
     return g.str();
   }
   const int column = s.axis == Axis::stress ? 2 : 3;
@@ -109,16 +130,18 @@ std::vector<ExperimentError> experiment_errors(const Problem& problem, const std
       a.scale = s.scale;
       double sum = 0.0, sum_n = 0.0;
       for (std::size_t i = 0; i < s.x.size(); ++i) {
-        const double d = problem.simulated(k, s, i, view) - s.measured[i];
-        const double n = std::isfinite(d) ? d / s.scale : problem.spec().optimizer.penalty;
+        const double simulated = problem.simulated(k, s, i, view), d = simulated - s.measured[i];
+        const double n = problem.normalised_error(s, i, simulated);
         sum += std::isfinite(d) ? d * d : NAN;
         a.mean += d;
+        a.measured_mean += s.measured[i];
         sum_n += n * n;
         a.max_abs = std::max(a.max_abs, std::isfinite(d) ? std::abs(d) : INFINITY);
         e.cost_share += s.point_weight * n * n;
       }
       a.rms = std::sqrt(sum / a.points);
       a.mean /= a.points;
+      a.measured_mean /= a.points;
       a.rms_normalised = std::sqrt(sum_n / a.points);
       e.axes.push_back(a);
     }
@@ -180,10 +203,12 @@ json report_json(const Problem& problem, const FitResult& fit, const std::vector
   json ex = json::array();
   for (const ExperimentError& e : errors) {
     json axes = json::array();
-    for (const AxisError& a : e.axes)
+    for (const AxisError& a : e.axes) {
       axes.push_back({{"axis", name_of(a.axis)}, {"points", a.points}, {"rms_normalised", number_or_null(a.rms_normalised)},
                       {"rms", number_or_null(a.rms)}, {"max_abs", number_or_null(a.max_abs)}, {"mean", number_or_null(a.mean)},
                       {"scale", a.scale}});
+      if (a.axis == Axis::closing) axes.back()["measured"] = a.measured_mean;
+    }
     ex.push_back({{"id", e.id}, {"test", name_of(e.test)}, {"group", e.group}, {"ok", e.ok}, {"message", e.message},
                   {"weight", e.weight}, {"cost_share", e.cost_share}, {"axes", axes}});
   }
@@ -267,10 +292,15 @@ std::string report_markdown(const json& r) {
   }
   m << "\n## Errors per test\n\nRMS of simulated minus measured at the measured points, in the axis' unit and normalised by the "
        "measured range (scale); share = part of the objective.\n\n"
-       "| test | type | group | weight | share | stress RMS | stress RMS/scale | e_v RMS % | e_v RMS/scale | phi RMS deg (mean: bias) | status |\n"
-       "|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "| test | type | group | weight | share | stress RMS | stress RMS/scale | e_v RMS % | e_v RMS/scale | phi RMS deg (mean: bias)";
+  // The closings' column only where a test has one.
+  bool closings = false;
+  for (const json& e : r["experiments"])
+    for (const json& a : e["axes"]) closings = closings || a["axis"] == name_of(Axis::closing);
+  m << (closings ? " | closing: lab, fit" : "") << " | status |\n|---|---|---|---|---|---|---|---|---|---|" << (closings ? "---|" : "")
+    << "---|\n";
   for (const json& e : r["experiments"]) {
-    std::string cells[5] = {"-", "-", "-", "-", "-"};
+    std::vector<std::string> cells(closings ? 6 : 5, "-");
     for (const json& a : e["axes"]) {
       auto num = [](const json& v, const char* f) { return v.is_null() ? std::string("failed") : fmt(v.get<double>(), f); };
       const auto axis = common::value_in(axis_names, a["axis"].get<std::string>());
@@ -280,6 +310,9 @@ std::string report_markdown(const json& r) {
       } else if (axis == Axis::volumetric) {
         cells[2] = num(a["rms"], "%.3g");
         cells[3] = num(a["rms_normalised"], "%.3f");
+      } else if (axis == Axis::closing) {
+        const double lab = a["measured"].get<double>();
+        cells[5] = fmt(lab, "%.3f") + ", " + (a["mean"].is_null() ? std::string("failed") : fmt(lab + a["mean"].get<double>(), "%.3f"));
       } else {
         cells[4] = num(a["rms"], "%.3g") + (a["mean"].is_null() ? "" : " (mean " + fmt(a["mean"].get<double>(), "%+.2f") + ")");
       }
@@ -361,7 +394,20 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
         }
       }
       add(fs::path("curves") / (x.id + "_points.csv"), pts.str());
-      if (!table) {
+      if (is_gap_closing(x.test)) {
+        std::ostringstream c, lab;
+        c << "test,eps_a_pct,stress_ratio\n";
+        lab << "test,eps_a_pct,stress_ratio\n";
+        for (std::size_t t = 0; t < 2; ++t) {
+          const TestRunOutcome& o = outcomes[problem.test_runs_of(k)[t]];
+          for (std::size_t i = 0; i < o.eps_a_pct.size(); ++i) c << t << ',' << fmt(o.eps_a_pct[i], "%.6g") << ',' << fmt(o.stress[i], "%.6g") << '\n';
+          const driver::LabCurve curve = driver::read_lab_curve(x.gap_tests[t].data_file);
+          const auto [eps_a, ratio] = common::finite_samples(curve.column("eps_a_pct"), curve.column("stress_ratio"));
+          for (std::size_t i = 0; i < eps_a.size(); ++i) lab << t << ',' << eps_a[i] << ',' << ratio[i] << '\n';
+        }
+        add(fs::path("curves") / (x.id + ".csv"), c.str());
+        add(fs::path("curves") / (x.id + "_lab.csv"), lab.str());
+      } else if (!table) {
         const TestRunOutcome& o = outcomes[problem.test_runs_of(k).front()];
         std::ostringstream c;
         c << "eps_a_pct," << name_of(x.stress_measure) << ",eps_v_pct\n";
@@ -374,8 +420,8 @@ std::vector<std::string> write_outputs(const Problem& problem, const FitResult& 
       gp << "set terminal pngcairo size " << 600 * n << ",450 font ',10'\nset output " << common::gp_quoted(x.id + ".png.tmp") << "\n"
          << "set datafile separator ','\nset key top left\nset grid\nset multiplot layout 1," << n << "\n";
       for (std::size_t si = 0; si < problem.series(k).size(); ++si) {
-        gp << panel(problem, k, problem.series(k)[si], si, "");
-        overview += panel(problem, k, problem.series(k)[si], si, "curves/");
+        gp << panel(problem, k, problem.series(k)[si], si, "", view);
+        overview += panel(problem, k, problem.series(k)[si], si, "curves/", view);
         ++panels;
       }
       gp << "unset multiplot\nset output\n";

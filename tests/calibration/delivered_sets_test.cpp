@@ -44,5 +44,28 @@ INSTANTIATE_TEST_SUITE_P(Toyoura, DeliveredSet,
                                            Delivered{"toyoura_acst_li2002", "toyoura_acst_li2002_calibrated"},
                                            Delivered{"toyoura_isotropic", "toyoura_isotropic_calibrated"}));
 
+// A candidate keeps its report (and only the reference group's set): the values the report
+// states give the objective it states, closings included.
+TEST(CandidateReport, ClosingFitReproducesItsObjective) {
+  const std::string name = "toyoura_acst_closing";
+  const FitSpec spec = read_fit_spec(std::string(ACST_SOURCE_DIR) + "/data/calibration/" + name + "_fit.json");
+  const Problem problem(spec);
+  const json report = json::parse(test::read_text("data/calibration/reports/" + name + "/" + name + "_report.json"));
+  ASSERT_EQ(report["parameters"].size(), problem.variables().size());
+  Eigen::VectorXd theta(static_cast<Eigen::Index>(problem.variables().size()));
+  for (std::size_t j = 0; j < problem.variables().size(); ++j) {
+    ASSERT_EQ(report["parameters"][j]["label"].get<std::string>(), problem.variables()[j].label);
+    theta[static_cast<Eigen::Index>(j)] = report["parameters"][j]["value"].get<double>();
+  }
+  // The kept set is the report's values of the Tatsuoka specimens.
+  const json kept = json::parse(test::read_text("data/calibration/reports/" + name + "/" + name + "_parameters_tatsuoka.json"));
+  const Parameters tatsuoka = problem.parameters(theta, "tatsuoka");
+  for (const FitVariable& v : problem.variables())
+    if (v.group.empty() || v.group == "tatsuoka")
+      EXPECT_DOUBLE_EQ(kept["parameters"][v.parameter].get<double>(), tatsuoka.*parameter_info(v.parameter)->member) << v.label;
+  const double cost = problem.residuals({theta}).front().squaredNorm();
+  EXPECT_NEAR(cost, report["objective"]["sum_of_squares"].get<double>(), 1e-6 * cost);
+}
+
 }  // namespace
 }  // namespace acst::calibration

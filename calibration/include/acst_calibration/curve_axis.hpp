@@ -6,12 +6,13 @@
 namespace acst::calibration {
 
 // stress: sigma1'/sigma3' or q against axial strain; volumetric: eps_v % against axial strain;
-// phi: the peak friction angle (deg) of each row of a table test.
-enum class Axis { stress, volumetric, phi };
+// phi: the peak friction angle (deg) of each row of a table test; closing: a gap_closing test's
+// ratio gap(second strain) / gap(first strain) of the gap in sigma1'/sigma3' between two tests.
+enum class Axis { stress, volumetric, phi, closing };
 
 // The names in the fit description ("fit"), the reports and the figures' titles.
 inline constexpr common::Named<Axis> axis_names[] = {
-    {"stress", Axis::stress}, {"volumetric", Axis::volumetric}, {"phi", Axis::phi}};
+    {"stress", Axis::stress}, {"volumetric", Axis::volumetric}, {"phi", Axis::phi}, {"closing", Axis::closing}};
 
 inline const char* name_of(Axis a) { return common::name_in(axis_names, a); }
 

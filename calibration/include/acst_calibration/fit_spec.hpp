@@ -48,6 +48,12 @@ struct ExperimentSpec {
   // experiment's one value for every row: b, bedding_angle_deg, sigma3_kPa, void_ratio.
   std::string phi_column = "phi_deg", b_column = "b", bedding_column = "omega_deg";
   std::string sigma3_column, void_ratio_column;
+  // gap_closing: the two tests (their data files, conditions and run settings, read like curve
+  // experiments; the gap is the first's sigma1'/sigma3' minus the second's), the axial strains
+  // the gap is taken at, and the closing's normalising scale.
+  std::vector<ExperimentSpec> gap_tests;
+  double gap_from_pct = 0.0, gap_to_pct = 0.0;
+  double closing_scale = 1.0;
 };
 
 struct OptimizerSettings {

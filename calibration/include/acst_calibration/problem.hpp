@@ -7,6 +7,9 @@
 // with `range` the measured range of that series inside the strain range (floored, see
 // series_scale), so that the sum of squares is a weighted mean of squared normalised errors and
 // the weights of the types, of the tests inside a type and of the two axes each sum to one.
+// A gap_closing test has one residual, sqrt(w_type w_test) (simulated - measured) / scale, with the
+// closings computed alike from the two simulated and the two measured curves (gap_closing) and
+// the description's scale (default 1: a closing runs from 1, the gap kept, to 0, the gap gone).
 // A failed or too short simulation gives `penalty` instead of the normalised error: large and
 // finite, never an exception.
 #include <Eigen/Core>
@@ -30,10 +33,11 @@ struct FitVariable {
   double start = 0.0, lower = 0.0, upper = 0.0;
 };
 
-// Measured points of one axis of one experiment, inside its strain range.
+// Measured points of one axis of one experiment, inside its strain range (a gap_closing test: its
+// one closing, at the second strain).
 struct Series {
   Axis axis = Axis::stress;
-  std::vector<double> x;       // axial strain % (curves) or table row index (tables)
+  std::vector<double> x;       // axial strain % (curves, closings) or table row index (tables)
   std::vector<double> measured;
   double scale = 1.0;          // normalising range
   double point_weight = 0.0;   // w_type w_test w_axis / n_points
@@ -94,6 +98,9 @@ class Problem {
   // The simulated value at point i of series s of experiment k (NaN when the run failed or
   // ended before that strain); outcomes are indexed like test_runs().
   double simulated(std::size_t k, const Series& s, std::size_t i, const std::vector<const TestRunOutcome*>& outcomes) const;
+  // (simulated - measured) / scale at point i of s, as the residuals use it: the penalty where the
+  // value is not a number, and a closing held within +-penalty.
+  double normalised_error(const Series& s, std::size_t i, double simulated) const;
 
   WorkCounters& counters() const { return counters_; }
   int threads() const { return threads_; }
@@ -119,6 +126,13 @@ class Problem {
 // absolute floor for the axis (and, on the stress axis, its measure) so that flat series do not
 // blow up.
 double series_scale(const std::vector<double>& measured, Axis axis, StressMeasure measure);
+
+// The closing of the gap between two sigma1'/sigma3' curves (first minus second) from one axial
+// strain to another: gap(to_pct) / gap(from_pct); NaN where a curve does not reach a strain or the
+// first gap is zero.
+double gap_closing(const std::vector<double>& first_eps_a, const std::vector<double>& first_ratio,
+                   const std::vector<double>& second_eps_a, const std::vector<double>& second_ratio, double from_pct,
+                   double to_pct);
 
 // Peak friction angle (deg) of a stress state: asin((s1 - s3)/(s1 + s3)) over principal stresses.
 double friction_angle_deg(const Sym& stress);

@@ -21,6 +21,7 @@ struct AxisError {
   double max_abs = 0.0;
   double mean = 0.0;            // mean of simulated - measured: the bias, in the axis' unit
   double scale = 0.0;
+  double measured_mean = 0.0;   // mean of the measured values (a closing: its one lab value)
 };
 
 struct ExperimentError {
