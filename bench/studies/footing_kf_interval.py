@@ -8,8 +8,9 @@ one cell size, to one S/B) with each parameter set given: the closing candidate'
 its interval (bench/results/kf_profile_closing/sets/), and the delivered set, whose runs of the
 same case are read from bench/results/footing_regularised/convergence.csv (not run again; their
 load curves are not kept). Nothing here chooses a set: the footing is measured over what the
-element data allow. Cases already in OUT are not run again. Writes OUT/interval.csv (one row per set: its k_f, V's and H's first peak and
-largest load to the stop, q_H / q_V of both, against the centrifuge's 0.89) and OUT/interval.png
+element data allow. Cases already in OUT are not run again. Writes OUT/interval.csv (one row per
+set: its k_f, V's and H's first peak and largest load to the stop, q_H / q_V of both, against
+the centrifuge's 0.89), OUT/curves.csv (the runs' load curves, decimated) and OUT/interval.png
 (the ratio against k_f, and the load curves).
 
   python3 bench/studies/footing_kf_interval.py [--out DIR] [--h 0.03] [--stop 0.2] [--threads 2] [LABEL=SET ...]

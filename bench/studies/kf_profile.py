@@ -127,11 +127,14 @@ def main():
     ap.add_argument("k_f", nargs="+", type=float)
     a = ap.parse_args()
     a.out = os.path.abspath(a.out)
+    a.fit = os.path.abspath(a.fit)
+    with open(a.fit) as f:
+        closing_fitted = any(e.get("test") == "gap_closing" for e in json.load(f)["experiments"])
     table = []
     for k_f in a.k_f:
         if not 0.0 <= k_f <= 40.0:
             sys.exit(f"k_f {k_f:g} is out of range; allowed: [0, 40] (the fit's bounds)")
-        report, folds, parameter_set = fit_at(k_f, a.out, a.tool, os.path.abspath(a.fit))
+        report, folds, parameter_set = fit_at(k_f, a.out, a.tool, a.fit)
         values = {p["label"]: p["value"] for p in report["parameters"]}
         row = {"k_f": k_f, "objective": round(report["objective"]["sum_of_squares"], 5),
                "fit_s": round(report["time"]["total_s"], 1)}
@@ -146,9 +149,7 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(table[0]))
         w.writeheader()
         w.writerows(table)
-    which = "the delivered fit" if os.path.abspath(a.fit) == FIT else os.path.basename(a.fit)
-    with open(a.fit) as f:
-        closing_fitted = any(e.get("test") == "gap_closing" for e in json.load(f)["experiments"])
+    which = "the delivered fit" if a.fit == FIT else os.path.basename(a.fit)
     figure(os.path.join(a.out, "profile.png"), table, f"{which} with k_f held (Toyoura sand, ACST)", closing_fitted)
 
 
