@@ -11,7 +11,8 @@ band, between two axial strains after the peak).
 
   python3 bench/studies/biaxial_band.py --out DIR [--threads 2] CASE ...
   CASE: h=0.025,l=0.05[,kernel=gauss|galavi_schweiger][,averaged=void_ratio_increments|void_ratio]
-        [,m=1][,every=20][,weak=0.1]   (l=0: the local model; weak: the imperfection's side, m)
+        [,m=1][,every=20][,weak=0.1][,lc=0.02][,kc=0.5]   (l=0: the local model; weak: the
+        imperfection's side, m; lc, kc: micropolar rotations' length, m, and modulus ratio)
 """
 import argparse
 import csv
@@ -61,6 +62,8 @@ def scene(case, speed, strain_to):
         s["regularisation"] = {"internal_length_m": l, "kernel": case.get("kernel", "gauss"),
                                "averaged": case.get("averaged", "void_ratio_increments"),
                                "over_nonlocal": float(case.get("m", 1.0)), "every_steps": int(case.get("every", 20))}
+    if float(case.get("lc", 0)) > 0:
+        s["micropolar"] = {"length_m": float(case["lc"]), "modulus_ratio": float(case.get("kc", 0.5))}
     return s
 
 
@@ -169,7 +172,8 @@ def parse_case(text, threads):
             c[k] = v
     tag = f"h{c['h_text']}_l{c['l_text']}" + (f"_{c['kernel']}" if "kernel" in c else "") + (
         f"_{c['averaged']}" if "averaged" in c else "") + (f"_m{c['m']}" if "m" in c else "") + (
-        f"_every{c['every']}" if "every" in c else "") + (f"_weak{c['weak']}" if "weak" in c else "")
+        f"_every{c['every']}" if "every" in c else "") + (f"_weak{c['weak']}" if "weak" in c else "") + (
+        f"_lc{c['lc']}" if "lc" in c else "") + (f"_kc{c['kc']}" if "kc" in c else "")
     c["name"] = "biaxial_" + tag.replace(".", "p")
     return c
 
@@ -217,6 +221,7 @@ def main():
         r = {"case": c["name"], "h_m": c["h"], "l_m": c["l"], "kernel": c.get("kernel", "gauss" if c["l"] > 0 else ""),
              "averaged": c.get("averaged", "void_ratio_increments" if c["l"] > 0 else ""),
              "over_nonlocal": float(c.get("m", 1.0)) if c["l"] > 0 else "",
+             "micropolar_length_m": float(c.get("lc", 0)), "micropolar_modulus_ratio": float(c.get("kc", 0.5)) if "lc" in c else "",
              "peak_ratio": round(ratio[k], 3), "eps_peak_pct": round(eps[k], 2),
              "ratio_at_8pct": round(next((ratio[i] for i in range(len(eps)) if eps[i] >= 8.0), float("nan")), 3),
              "ratio_at_12pct": round(ratio[-1], 3), "band_angle_deg": b["angle_deg"], "band_thickness_m": b["thickness_m"],

@@ -22,6 +22,20 @@ def study_arguments(doc, out_name, only_help, switches=()):
     return ap.parse_args()
 
 
+def footing_cases_arguments(doc, out, stop, extra=()):
+    """The command line of a study of footing cases: --out (default `out`), --threads, --stop
+    (default `stop`), --tool, the study's `extra` (flag, keyword arguments) pairs and CASE ...."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    for flag, kw in extra:
+        ap.add_argument(flag, **kw)
+    ap.add_argument("--out", default=out)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--stop", type=float, default=stop, help="S/B to run to")
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
+    ap.add_argument("cases", nargs="+")
+    return ap.parse_args()
+
+
 def scene_with_absolute_paths(path):
     """A scene file as a dict, its parameter files and lab curve made absolute (they are relative
     to the scene's folder), so that a changed copy can be written anywhere."""
@@ -111,6 +125,19 @@ def run_case(tool, out, name, scene):
         json.dump(scene, f, indent=1)
     run = subprocess.run([tool, "--quiet", "--output", run_dir, path], capture_output=True, text=True)
     return run_dir, None if run.returncode == 0 else "failed: " + run.stderr.strip()[:200]
+
+
+def run_and_read(tool, out, name, scene, cell, rows):
+    """Runs a case (run_case) and returns its folder, its summary and its load curve (S/B, q); a
+    case that failed is appended to rows (its name, cell and failure), printed, and gives None."""
+    run_dir, failure = run_case(tool, out, name, scene)
+    if failure:
+        rows.append({"case": name, "cell_m": cell, "status": failure})
+        print(json.dumps(rows[-1]), flush=True)
+        return None
+    with open(os.path.join(run_dir, "summary.json")) as f:
+        summary = json.load(f)
+    return run_dir, summary, read_curve(os.path.join(run_dir, "load_settlement.csv"))
 
 
 def old_rows(path, rows):

@@ -20,14 +20,13 @@ OUT/q_against_h.png. A case whose summary.json exists is not run again.
   CASE: h=0.045[,grid=uniform|graded][,phi=30][,psi=phi][,c=10][,E=1e5][,above=6]
         (above: the grid's cells above the soil, for the heave; the scene's 6 unless given)
 """
-import argparse
 import json
 import math
 import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, old_rows, read_curve, run_case, scene_with_absolute_paths, write_table
+from footing_common import ROOT, footing_cases_arguments, gp_quoted, old_rows, run_and_read, scene_with_absolute_paths, write_table
 
 BASE = os.path.join(ROOT, "data", "scenes", "mpm", "convergence", "kimura_V85.6_alpha0_h0045.json")
 FIELDS = ["case", "grid", "cell_m", "friction_angle_deg", "dilation_angle_deg", "cohesion_kPa", "E_kPa",
@@ -86,24 +85,14 @@ def mean_between(S, q, lo, hi):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "footing_frictional"))
-    ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--stop", type=float, default=0.06, help="S/B to run to")
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
-    ap.add_argument("cases", nargs="+")
-    a = ap.parse_args()
+    a = footing_cases_arguments(__doc__, os.path.join(ROOT, "bench", "results", "footing_frictional"), 0.06)
     rows = []
     for text in a.cases:
         c = parse_case(text)
-        run_dir, failure = run_case(a.tool, a.out, c["name"], scene_of(c, a.stop, a.threads))
-        if failure:
-            rows.append({"case": c["name"], "cell_m": c["h"], "status": failure})
-            print(json.dumps(rows[-1]), flush=True)
+        got = run_and_read(a.tool, a.out, c["name"], scene_of(c, a.stop, a.threads), c["h"], rows)
+        if got is None:
             continue
-        with open(os.path.join(run_dir, "summary.json")) as f:
-            summary = json.load(f)
-        S, q = read_curve(os.path.join(run_dir, "load_settlement.csv"))
+        _, summary, (S, q) = got
         closed = c["c"] * prandtl_nc(c["phi"]) if c["psi"] == c["phi"] else None  # Prandtl's needs associated flow
         mean = mean_between(S, q, *WINDOW)
         rows.append({"case": c["name"], "grid": c["grid"], "cell_m": c["h"], "friction_angle_deg": c["phi"],

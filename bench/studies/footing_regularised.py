@@ -13,11 +13,12 @@ and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
-        [,window=B][,set=acst|isotropic|FILE.json][,m=1]   (TEST V85.6 or H86.7; largest: the graded grid's
+        [,window=B][,set=acst|isotropic|FILE.json][,m=1][,lc=METRES][,kc=0.5]   (TEST V85.6 or H86.7; largest: the graded grid's
         largest cell, default 4 h; window: its window's half-width and depth in footing widths, default 3;
         set: the delivered ACST set, the delivered isotropic one (data/parameters/toyoura_isotropic_calibrated.json),
         or a material file relative to the repository, whose plain stem joins the case's name;
-        m: the regularisation's over-nonlocal factor)
+        m: the regularisation's over-nonlocal factor; lc, kc: micropolar rotations' length and modulus
+        ratio, docs/mpm.md "Micropolar rotations")
 """
 import argparse
 import csv
@@ -57,7 +58,7 @@ def parse_case(text):
         if key in c and c["grid"] != "graded":
             sys.exit(f"{text}: {key} needs grid=graded")
     tag = f"{c['test']}_h{c['h']:g}_l{c['l']}_v{c['speed']:g}_cfl{c['cfl']:g}"
-    for key in ("largest", "window", "m"):
+    for key in ("largest", "window", "m", "lc", "kc"):
         if key in c:
             tag += f"_{key}{c[key]:g}"
     if c["grid"] == "graded":
@@ -93,6 +94,10 @@ def scene_of(c, stop, threads):
         if "regularisation" not in s:
             sys.exit(f"{c['name']}: m needs a regularisation (l > 0)")
         s["regularisation"]["over_nonlocal"] = c["m"]
+    if c.get("lc", 0) > 0:
+        s["micropolar"] = {"length_m": c["lc"], "modulus_ratio": c.get("kc", 0.5)}
+    elif "kc" in c:
+        sys.exit(f"{c['name']}: kc needs micropolar rotations (lc > 0)")
     return s
 
 

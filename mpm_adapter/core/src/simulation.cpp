@@ -73,6 +73,8 @@ void Simulation::prepare() {
   const std::size_t N = grid_.nodes(), n = particles_.n;
   for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
   w.constraints.resize(N);
+  if (settings_.micropolar.active())
+    for (auto* v : {&w.inertia, &w.spin, &w.couple, &w.skew_fx, &w.skew_fy}) v->assign(N, 0.0);
   w.first_i.assign(n, 0);
   w.first_j.assign(n, 0);
   for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
@@ -141,6 +143,15 @@ double Simulation::stable_time_step() const {
   // omega keeps it stable with the CFL bound's margin (no restriction at one particle per cell
   // and factor <= 4).
   if (omega > 0.0) dt = std::min(dt, 2.0 * settings_.cfl / omega);
+  // Micropolar rotations: the stiffest rotation's frequency, omega^2 = ratio c^2 (1 + 4 l^2/h^2) / j
+  // (the relative rotation, and the couple stress's shortest wave, over the grains' inertia j).
+  if (settings_.micropolar.active()) {
+    const double l = settings_.micropolar.length, h = std::min(grid_.h, grid_.hy);
+    const double c = stiffest_wave_speed() * scale;
+    const double rotation =
+        c * std::sqrt(settings_.micropolar.modulus_ratio * (1.0 + 4.0 * l * l / (h * h)) / micro_inertia());
+    if (rotation > 0.0) dt = std::min(dt, 2.0 * settings_.cfl / rotation);
+  }
   return dt;
 }
 
@@ -398,7 +409,9 @@ void Simulation::step() {
   refresh_time_step();
   compute_shape_functions();
   map_mass_and_momentum();
+  map_micro_rotation();
   apply_constraints();
+  update_micropolar_stress(work_.vx.data(), work_.vy.data(), clock_.dt);
   const StressUpdate when = settings_.stress_update;
   const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
   if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
@@ -525,6 +538,7 @@ void Simulation::internal_force_and_reactions() {
     scatter(std::true_type{});
   else
     scatter(std::false_type{});
+  micropolar_force();
   if (boundaries_.footing.uses_contact()) boundaries_.footing.spread(grid_, w.mass.data(), w.fx.data(), w.fy.data());
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
@@ -612,6 +626,7 @@ void Simulation::update_particles() {
     P.x[p] += (svx + 0.5 * (vx1 - vx0)) * clock_.dt;
     P.y[p] += (svy + 0.5 * (vy1 - vy0)) * clock_.dt;
   });
+  update_micro_spin();
 }
 
 // Momentum re-extrapolated from the new particle velocities; the constrained velocity field.

@@ -16,8 +16,10 @@ void Walls::fold(double* q, FieldKind c, const Grid& grid) const {
     for (int k = 1; k <= reach; ++k) node(-k) = s * node(k);
   };
   // The mirror image's sign: a scalar keeps it; the component normal to the wall changes it, and
-  // the tangential one too where the wall holds it (no slip), not where it slides.
+  // the tangential one too where the wall holds it (no slip), not where it slides. A rotation is
+  // reversed by a mirror, and a wall that holds the soil holds its grains' rotation too.
   const auto sign = [c](WallKind wall, FieldKind normal) {
+    if (c == FieldKind::rotation) return -1.0;
     return c == FieldKind::scalar ? 1.0 : (c == normal || wall == WallKind::fixed ? -1.0 : 1.0);
   };
   if (left_side != WallKind::none) {

@@ -16,7 +16,7 @@ constexpr std::uintmax_t max_checkpoint_bytes = std::uintmax_t{16} << 30;
 
 // Layout (docs/mpm.md, "Checkpoints"): magic, scene text, material records, particle arrays, run
 // fields, then the FNV-1a checksum of everything before it.
-constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '7'};
+constexpr char magic[8] = {'A', 'C', 'S', 'T', 'M', 'P', 'M', '8'};
 constexpr std::size_t checksum_bytes = sizeof(std::uint64_t);
 
 struct Writer {
@@ -87,7 +87,8 @@ void particle_arrays(P& particles, F&& f) {
   auto& p = particles;
   for (auto* v : {&p.x, &p.y, &p.x_initial, &p.y_initial, &p.vx, &p.vy, &p.mass, &p.weight_mass, &p.volume_initial,
                   &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.side_length,
-                  &p.wave_speed, &p.void_ratio_offset, &p.void_ratio_averaged, &p.track_frame})
+                  &p.wave_speed, &p.void_ratio_offset, &p.void_ratio_averaged, &p.track_frame, &p.micro_spin,
+                  &p.skew_stress, &p.couple_x, &p.couple_y})
     f(*v);
   f(p.material);
   f(p.stress_free);

@@ -128,22 +128,28 @@ GradedGridSpec read_graded(const json& j, const std::string& p, double cell_size
   return g;
 }
 
+// A length given as `key` (m), or derived from the grains by `from_grains(d50_mm, level)` with
+// `d50_mm` (Toyoura's by default) and `acceleration_level` (1 by default).
+double length_given_or_from_grains(const json& j, const std::string& p, const char* key,
+                                   double (*from_grains)(double, double)) {
+  if (j.contains(key)) {
+    for (const char* k : {"d50_mm", "acceleration_level"})
+      if (j.contains(k)) f::fail(p + "/" + k, std::string("not with ") + key + " (which it would derive)");
+    return f::number(j[key], p + "/" + key, {0.0, 100.0}, "m");
+  }
+  const double d50 =
+      j.contains("d50_mm") ? f::number(j["d50_mm"], p + "/d50_mm", {0.0, 100.0, true, false}, "mm") : toyoura_d50_mm;
+  const double level =
+      j.contains("acceleration_level") ? f::number(j["acceleration_level"], p + "/acceleration_level", {1.0, 1000.0}) : 1.0;
+  return from_grains(d50, level);
+}
+
 Regularisation read_regularisation(const json& j, const std::string& p) {
   f::allow_keys(j, {"internal_length_m", "d50_mm", "acceleration_level", "kernel", "averaged", "over_nonlocal",
                     "every_steps"},
                 p);
   Regularisation r;
-  if (j.contains("internal_length_m")) {
-    for (const char* k : {"d50_mm", "acceleration_level"})
-      if (j.contains(k)) f::fail(p + "/" + k, "not with internal_length_m (which it would derive)");
-    r.internal_length = f::number(j["internal_length_m"], p + "/internal_length_m", {0.0, 100.0}, "m");
-  } else {
-    const double d50 = j.contains("d50_mm") ? f::number(j["d50_mm"], p + "/d50_mm", {0.0, 100.0, true, false}, "mm")
-                                            : toyoura_d50_mm;
-    const double level =
-        j.contains("acceleration_level") ? f::number(j["acceleration_level"], p + "/acceleration_level", {1.0, 1000.0}) : 1.0;
-    r.internal_length = internal_length_from_grains(d50, level);
-  }
+  r.internal_length = length_given_or_from_grains(j, p, "internal_length_m", internal_length_from_grains);
   if (j.contains("kernel"))
     r.kernel = f::choice<NonlocalKernel>(j["kernel"], p + "/kernel",
                                          {{"gauss", NonlocalKernel::gauss}, {"galavi_schweiger", NonlocalKernel::galavi_schweiger}});
@@ -154,6 +160,17 @@ Regularisation read_regularisation(const json& j, const std::string& p) {
   if (j.contains("over_nonlocal")) r.over_nonlocal = f::number(j["over_nonlocal"], p + "/over_nonlocal", {1.0, 4.0});
   if (j.contains("every_steps")) r.every = static_cast<int>(f::integer(j["every_steps"], p + "/every_steps", 1, 100000));
   return r;
+}
+
+// The soil's micropolar rotations (docs/mpm.md, "Micropolar rotations"): their length, given or
+// the grains' (internal_length.hpp), and the modulus's share of the constrained modulus.
+Micropolar read_micropolar(const json& j, const std::string& p) {
+  f::allow_keys(j, {"length_m", "d50_mm", "acceleration_level", "modulus_ratio"}, p);
+  Micropolar m;
+  m.length = length_given_or_from_grains(j, p, "length_m", micropolar_length_from_grains);
+  if (j.contains("modulus_ratio"))
+    m.modulus_ratio = f::number(j["modulus_ratio"], p + "/modulus_ratio", {0.0, 1.0, true, false});
+  return m;
 }
 
 FootingSpec read_footing(const json& j, const std::string& p) {
@@ -305,7 +322,7 @@ void check_symmetric(const Scene& s) {
 Scene scene_from_document(const json& j, const std::string& file) {
   f::allow_keys(j, {"name", "description", "grid", "materials", "bodies", "initial_stress", "gravity", "walls",
                     "surcharge_kPa", "confining_pressure_kPa", "footing", "quasi_static", "solver", "regularisation",
-                    "stop", "output"},
+                    "micropolar", "stop", "output"},
                 "");
   const std::string dir = file.empty() ? "" : std::filesystem::path(file).parent_path().string();
   Scene s;
@@ -375,6 +392,7 @@ Scene scene_from_document(const json& j, const std::string& file) {
   }
   if (j.contains("solver")) s.solver = read_solver(j["solver"], "/solver");
   if (j.contains("regularisation")) s.solver.regularisation = read_regularisation(j["regularisation"], "/regularisation");
+  if (j.contains("micropolar")) s.solver.micropolar = read_micropolar(j["micropolar"], "/micropolar");
   s.solver.gravity = s.gravity;
   if (follow_footing && !s.footing) f::fail("/grid/follow_footing", "needs a /footing (the rows follow its base)");
   s.solver.grid_follows_footing = follow_footing;

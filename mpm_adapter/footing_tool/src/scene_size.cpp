@@ -15,19 +15,20 @@ namespace f = acst::common::fields;
 
 namespace {
 
-// Bytes a particle costs: its arrays (Particles: 28 doubles, the state variables, the material
+// Bytes a particle costs: its arrays (Particles: 32 doubles, the state variables, the material
 // index; the footing base's friction: 1 double), their copy in a checkpoint's buffer, the step's
 // shape-function cache and mapped velocities (2 ints, 18 doubles), the footing contact (a list
 // entry, at most one per particle), the fields of a frame or contour figure (8 doubles), the
 // peak snapshot (4 doubles) and a frame's text (about 400 characters).
 double bytes_per_particle(int state_size, bool footing) {
-  const double arrays = 8.0 * (29 + state_size) + 4.0;
+  const double arrays = 8.0 * (33 + state_size) + 4.0;
   return 2.0 * arrays + 8.0 + 8.0 * 18 + (footing ? Footing::bytes_per_touch : 0.0) + 8.0 * 8 + 8.0 * 4 + 400.0;
 }
 
-// Bytes a grid node costs: 14 nodal fields, its constraints (2 ints, 2 doubles) and each
-// thread's scatter buffer (up to 3 fields).
-double bytes_per_node(int threads) { return 8.0 * 14 + 24.0 + 8.0 * 3 * threads; }
+// Bytes a grid node costs: 19 nodal fields (5 of them the micropolar rotations', allocated only
+// with them, counted always), its constraints (2 ints, 2 doubles) and each thread's scatter buffer
+// (up to 3 fields).
+double bytes_per_node(int threads) { return 8.0 * 19 + 24.0 + 8.0 * 3 * threads; }
 
 // A load-record row: the record and its CSV line (12 numbers of up to 17 characters).
 constexpr double bytes_per_record_row = sizeof(LoadRecord) + 12 * 18.0;

@@ -39,13 +39,6 @@ double homogeneous_offset(double e, NonlocalKernel kernel) {
   return worst;
 }
 
-// A scene on 0.1 m cells with the delivered ACST set as material "sand"; `rest` is the JSON
-// members after "materials" (bodies, loads, footing, stop, and any extra).
-std::string delivered_sand_scene(const std::string& rest) {
-  const std::string sand = std::string(ACST_SOURCE_DIR) + "/data/parameters/toyoura_acst_calibrated.json";
-  return R"({"name": "t", "grid": {"cell_size": 0.1}, "materials": {"sand": ")" + sand + R"("}, )" + rest + "}";
-}
-
 TEST(Regularisation, AHomogeneousFieldGivesTheLocalResultInEveryBundledElementScene) {
   int scenes = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(ACST_SOURCE_DIR) / "data/scenes/element")) {
@@ -76,22 +69,12 @@ TEST(Regularisation, AHomogeneousFieldGivesTheLocalResultInEveryBundledElementSc
 // A small dense-sand footing run 300 steps with "internal_length_m": 0 against the same scene
 // without the key: the same particles, to the bit.
 TEST(Regularisation, AnInternalLengthOfZeroIsTheLocalModel) {
-  const auto scene = [](const std::string& extra) {
-    return delivered_sand_scene(R"("bodies": [{"material": "sand", "x_range": [0, 2], "y_range": [0, 1], "density": 1600,
-           "relative_density_pct": 85, "bedding_angle_deg": 0}], "gravity": 9.8,
-           "initial_stress": {"type": "geostatic", "K0": 0.4}, "surcharge_kPa": 1,
-           "footing": {"width": 0.4, "centre_x": 1.0, "speed": 0.05}, "stop": {"steps": 300})" + extra);
-  };
-  Simulation a = mpm_test::build(scene("")), b = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0})"));
-  for (int k = 0; k < 300; ++k) a.step(), b.step();
-  EXPECT_EQ(a.particles().stress, b.particles().stress);
-  EXPECT_EQ(a.particles().statev, b.particles().statev);
-  EXPECT_EQ(a.particles().x, b.particles().x);
+  const auto scene = mpm_test::small_sand_footing;
+  mpm_test::expect_identical_runs(scene(""), scene(R"(, "regularisation": {"internal_length_m": 0})"), 300);
   // And with a length the same scene's particles carry offsets (the averaging ran).
-  Simulation c = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0.2})"));
-  for (int k = 0; k < 300; ++k) c.step();
-  const auto& d = c.particles().void_ratio_offset;
-  EXPECT_GT(*std::max_element(d.begin(), d.end()) - *std::min_element(d.begin(), d.end()), 1e-7);
+  EXPECT_GT(mpm_test::spread_after(scene(R"(, "regularisation": {"internal_length_m": 0.2})"), 300,
+                                   &Particles::void_ratio_offset),
+            1e-7);
 }
 
 // A row of dense sand between smooth walls, a smooth base and a smooth platen over its whole
@@ -99,26 +82,16 @@ TEST(Regularisation, AnInternalLengthOfZeroIsTheLocalModel) {
 // each particle's own and the regularised run, averaging every step, is the local one within
 // 1e-12 (stress, void ratio, fabric and every other state variable).
 TEST(Regularisation, AHomogeneouslyCompressedBlockGivesTheLocalResult) {
-  const auto scene = [](const std::string& extra) {
-    return delivered_sand_scene(R"("bodies": [{"material": "sand", "x_range": [0, 1.2], "y_range": [0, 0.1], "density": 1600,
-           "relative_density_pct": 85, "bedding_angle_deg": 30}], "gravity": 0,
-           "initial_stress": {"type": "isotropic", "p_kPa": 100}, "walls": {"base": "smooth", "sides": "smooth"},
-           "footing": {"width": 1.2, "centre_x": 0.6, "speed": 0.05, "interface": "smooth"},
-           "solver": {"xpic_every": 1}, "stop": {"steps": 600})" + extra);
-  };
+  const auto scene = mpm_test::compressed_sand_row;
   Simulation local = mpm_test::build(scene("")),
              nonlocal = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0.2, "every_steps": 1})"));
   const std::vector<double> state0 = local.particles().statev, averaged0 = nonlocal.particles().void_ratio_averaged;
   for (int k = 0; k < 600; ++k) local.step(), nonlocal.step();
   const Particles &a = local.particles(), &b = nonlocal.particles();
   ASSERT_EQ(a.n, 12u);
-  double scale = 0.0, stress = 0.0, state = 0.0;
-  for (double s : a.stress) scale = std::max(scale, std::fabs(s));
-  for (std::size_t k = 0; k < a.stress.size(); ++k) stress = std::max(stress, std::fabs(a.stress[k] - b.stress[k]) / scale);
-  for (std::size_t k = 0; k < a.statev.size(); ++k)
-    state = std::max(state, std::fabs(a.statev[k] - b.statev[k]) / std::max(1.0, std::fabs(a.statev[k])));
-  EXPECT_LT(stress, 1e-12);
-  EXPECT_LT(state, 1e-12);
+  const mpm_test::ParticleGap gap = mpm_test::particle_gap(a, b);
+  EXPECT_LT(gap.stress, 1e-12);
+  EXPECT_LT(gap.state, 1e-12);
   for (double d : b.void_ratio_offset) EXPECT_LT(std::fabs(d), 1e-13);
   EXPECT_GT(std::fabs(b.void_ratio_averaged[0] - averaged0[0]), 1e-3) << "the averaging followed the void ratio";
   // The compression was real and homogeneous: every particle shortened alike, by at least 2 % and

@@ -94,9 +94,9 @@ TEST(MpmCheckpoint, RejectsAnotherSceneAndTruncatedFiles) {
   expect_refused(file, other, "was written for a different scene");
   std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
   expect_refused(file, scene, "is damaged");  // the checksum no longer covers what is there
-  put_bytes(file, "ACSTMPM7");
+  put_bytes(file, "ACSTMPM8");
   expect_refused(file, scene, "is truncated");
-  put_bytes(file, "ACSTMPM6 and the rest of a checkpoint of an older version");
+  put_bytes(file, "ACSTMPM7 and the rest of a checkpoint of an older version");
   expect_refused(file, scene, "was written by another version of acst_mpm");
   put_bytes(file, "not a checkpoint at all");
   expect_refused(file, scene, "is not an acst_mpm checkpoint");

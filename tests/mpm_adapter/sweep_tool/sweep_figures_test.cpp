@@ -28,7 +28,7 @@ using namespace acst::mpm;
 using namespace sweep_runs;
 
 std::string description(const std::string& cases, const std::string& extra = "") {
-  return R"({"name": "t", "base": ")" + small_footing + R"(", "cases": )" + cases + (extra.empty() ? "" : ", " + extra) + "}";
+  return R"({"name": "t", "base": ")" + sweep_runs::small_footing + R"(", "cases": )" + cases + (extra.empty() ? "" : ", " + extra) + "}";
 }
 
 std::string text_of(const fs::path& file) { return acst::common::read_input_file(file.string()); }
@@ -58,7 +58,7 @@ TEST(CaseLabels, TheTitleHasWhatTheCasesShareAndEachLegendWhatSetsItApart) {
   const SweepSpec s = parse_sweep(description(R"([{"name": "a"},
       {"name": "b", "set": {"/bodies/0/bedding_angle_deg": 45, "/footing/inclination_deg": -20}},
       {"name": "c", "set": {"/materials/sand": "../../data/parameters/toyoura_isotropic_calibrated.json"}}])"),
-                                  small_footing);
+                                  sweep_runs::small_footing);
   const CaseLabels l = case_labels({&s.cases[0], &s.cases[1], &s.cases[2]});
   EXPECT_EQ(l.shared, "Dr = 85.6 %, B = 0.3 m, L = 2.4 m");
   ASSERT_EQ(l.legends.size(), 3u);

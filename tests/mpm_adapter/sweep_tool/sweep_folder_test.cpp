@@ -238,7 +238,7 @@ TEST(SweepFolder, AnInterruptedCaseWithADamagedCheckpointRunsAfresh) {
   const std::vector<Damage> damages{
       {"a damaged checkpoint", case_fingerprint(spec.cases[0]).dump(), "not a checkpoint",
        "is not an acst_mpm checkpoint: discarded, the case ran afresh"},
-      {"a damaged fingerprint", "{\"scene\": ", "ACSTMPM7 cut short",
+      {"a damaged fingerprint", "{\"scene\": ", "ACSTMPM8 cut short",
        "the interrupted run's fingerprint '"},
   };
   for (const Damage& d : damages) {

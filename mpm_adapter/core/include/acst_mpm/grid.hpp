@@ -48,8 +48,9 @@ struct Grid {
 };
 
 // How a nodal field behaves under a mirror image: a scalar (mass) keeps its sign, the velocity
-// or force component normal to a wall changes it.
-enum class FieldKind { scalar, x, y };
+// or force component normal to a wall changes it, a rotation (about the out-of-plane axis)
+// changes it at every wall.
+enum class FieldKind { scalar, x, y, rotation };
 
 // Forces a boundary exerts on the body, N/m (summed over its nodes).
 struct Reaction {

@@ -34,6 +34,18 @@ struct Regularisation {
   int every = 20;
 };
 
+// Micropolar (Cosserat) rotations of the soil (docs/mpm.md, "Micropolar rotations"): every
+// particle carries a micro-rotation besides its motion, with an elastic energy density
+// 1/2 k (theta_M - theta)^2 + 1/2 k l^2 |grad theta|^2 (theta_M the continuum's rotation,
+// k = modulus_ratio rho c^2 from the material's wave speed c) and a micro-inertia l^2 per unit
+// mass (at least a finest cell's square). The material's stress stays the symmetric part; length
+// 0 (the default) is the classical continuum, to the bit.
+struct Micropolar {
+  double length = 0.0;         // l, m
+  double modulus_ratio = 0.5;  // k / (rho c^2)
+  bool active() const { return length > 0.0; }
+};
+
 struct Settings {
   double cfl = 0.5;
   ParticleUpdate update = ParticleUpdate::XPIC;
@@ -49,6 +61,7 @@ struct Settings {
   double gravity = 0.0;           // m/s^2, acting in -y
   int threads = 0;                // 0: OpenMP default
   Regularisation regularisation;
+  Micropolar micropolar;
 };
 
 }  // namespace acst::mpm

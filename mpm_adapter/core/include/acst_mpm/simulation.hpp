@@ -97,6 +97,14 @@ class Simulation {
   void remap_momentum();
   void advance_boundaries();
 
+  // Micropolar rotations (simulation_micropolar.cpp; nothing while they are off).
+  void map_micro_rotation();
+  void update_micropolar_stress(const double* vx, const double* vy, double dt);
+  void micropolar_force();
+  void update_micro_spin();
+  double micropolar_modulus(std::size_t p) const;
+  double micro_inertia() const;
+
   void prepare();
   void local_void_ratios(std::vector<double>& out) const;
   void follow_footing();

@@ -19,6 +19,10 @@ struct StepScratch {
   // Nodal fields: mass, lumped velocity v_L, force, acceleration, a second velocity field.
   std::vector<double> mass, vx, vy, fx, fy, ax, ay, ux, uy, xpx, xpy;
   NodeConstraints constraints;
+  // Micropolar rotations (docs/mpm.md, "Micropolar rotations"): the nodes' rotational inertia,
+  // spin (angular momentum, then the micro-rotation rate), couple (then the spin's rate) and the
+  // skew stress's nodal forces.
+  std::vector<double> inertia, spin, couple, skew_fx, skew_fy;
   // The body's own mass and force before the walls' mirror images are folded in.
   std::vector<double> mass_body, fx_body, fy_body;
   // Per-particle scratch: velocities mapped from the grid.

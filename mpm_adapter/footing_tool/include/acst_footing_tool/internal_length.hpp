@@ -20,4 +20,13 @@ inline double internal_length_from_grains(double d50_mm, double acceleration_lev
   return band_thickness_in_d50 * d50_mm * 1e-3 * acceleration_level / band_per_length;
 }
 
+// The micropolar rotations' length (docs/mpm.md, "Micropolar rotations"), m: the mean grain
+// diameter, as the Cosserat models of sand take it (Muhlhaus & Vardoulakis 1987, Geotechnique
+// 37(3): 271-283; Tejchman & Wu 1993, Acta Mech. 99: 61-74), N times larger in prototype units at
+// N g. Not matched to a band: the band the rotations then give is measured
+// (docs/footing-study.md, "Micropolar rotations").
+inline double micropolar_length_from_grains(double d50_mm, double acceleration_level) {
+  return d50_mm * 1e-3 * acceleration_level;
+}
+
 }  // namespace acst::mpm
