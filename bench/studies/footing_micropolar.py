@@ -34,8 +34,7 @@ def case_of(text):
     parts = text.split(",")
     extra = {k: v for k, v in (p.split("=", 1) for p in parts[1:])}
     extra.setdefault("lc", str(DEFAULT_LENGTH))
-    c = fr.parse_case(",".join([parts[0], "grid=graded", "l=0"] + [f"{k}={v}" for k, v in extra.items()]))
-    return c
+    return fr.parse_case(",".join([parts[0], "grid=graded", "l=0"] + [f"{k}={v}" for k, v in extra.items()]))
 
 
 def thinned(S, q, rows=400):
@@ -106,14 +105,13 @@ def figures(out, rows):
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)
     panels = {}
     for test in ("V85.6", "H86.7"):
-        mine = sorted((float(r["cell_m"]), r["case"]) for r in rows if r["case"].startswith(test.replace(".", "p")))
+        mine = sorted((float(r["cell_m"]), float(r["micropolar_length_m"]), r["case"]) for r in rows
+                      if r["case"].startswith(test.replace(".", "p")))
         if mine:
             panels[test] = (f"{test}: micropolar rotations against the centrifuge",
-                            [(os.path.join(out, case + "_load.csv"), f"h = {h:g} m, lc = {case.split('_lc')[1].split('_')[0].replace('p', '.')} m")
-                             for h, case in mine])
-    if panels:
-        for test, panel in panels.items():
-            plot_beside_kimura(os.path.join(out, test + "_curves.png"), {test: panel}, 0.2, key="bottom right")
+                            [(os.path.join(out, case + "_load.csv"), f"h = {h:g} m, lc = {lc:g} m") for h, lc, case in mine])
+    for test, panel in panels.items():
+        plot_beside_kimura(os.path.join(out, test + "_curves.png"), {test: panel}, 0.2, key="bottom right")
 
 
 if __name__ == "__main__":

@@ -12,11 +12,6 @@
 #include "acst_mpm/shape_functions.hpp"
 
 namespace acst::mpm {
-namespace {
-
-constexpr double kilo = 1000.0;  // kPa * m -> N/m: the one unit conversion of the core
-
-}  // namespace
 
 Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
                        std::vector<std::shared_ptr<const AbiMaterial>> materials, Particles particles,

@@ -5,20 +5,15 @@
 // particle's modulus (modulus_ratio rho c^2), l the length. Its stresses are the skew stress
 // A = k (theta_M - theta) and the couple stress m = k l^2 grad theta; their power
 // A (W - theta') + m . grad theta' gives, on the grid, the nodal forces and couples below. The
-// grains' rotational inertia is l^2 per unit mass (micro_inertia). The material's (symmetric) stress is untouched:
-// a field without rotation gradients and with theta = theta_M has A = 0 and m = 0, and the
-// classical continuum's numbers.
+// grains' rotational inertia is micro_inertia() per unit mass. The material's (symmetric) stress
+// is untouched: a field without rotation gradients and with theta = theta_M has A = 0 and m = 0,
+// and the classical continuum's numbers.
 #include <algorithm>
 #include <cmath>
 
 #include "acst_mpm/simulation.hpp"
 
 namespace acst::mpm {
-namespace {
-
-constexpr double kilo = 1000.0;  // kPa * m -> N/m, as in simulation.cpp
-
-}  // namespace
 
 // k of particle p, kPa: modulus_ratio times the material's constrained modulus rho c^2 at the
 // particle's current density (the wave speed as last refreshed).
@@ -97,14 +92,13 @@ void Simulation::micropolar_force() {
       f[2][i] += A * S - (mx * dx + my * dy);
     });
   });
+  fold(w.couple.data(), FieldKind::rotation);
+  const double ag = settings_.grid_damping;
   for (std::size_t i = 0; i < grid_.nodes(); ++i) {
     w.fx[i] += w.skew_fx[i];
     w.fy[i] += w.skew_fy[i];
-  }
-  fold(w.couple.data(), FieldKind::rotation);
-  const double ag = settings_.grid_damping;
-  for (std::size_t i = 0; i < grid_.nodes(); ++i)
     w.couple[i] = w.inertia[i] > 0.0 ? w.couple[i] / w.inertia[i] - ag * w.spin[i] : 0.0;
+  }
 }
 
 // The particles' micro-rotation rates from the grid's (PIC: the grains' spin holds no history of

@@ -23,6 +23,10 @@
 
 namespace acst::mpm {
 
+// kPa -> Pa (kPa m -> N/m): the one unit conversion of the core (simulation.cpp and
+// simulation_micropolar.cpp).
+inline constexpr double kilo = 1000.0;
+
 struct SimulationError : std::runtime_error {
   using std::runtime_error::runtime_error;
   SimulationError(const std::string& what, std::string replay) : std::runtime_error(what), reproducer(std::move(replay)) {}
