@@ -97,7 +97,7 @@ def write_table(path, fields, rows):
 
 def plot_beside_kimura(png, panels, stop_s_over_b, key="bottom right"):
     """One panel per Kimura test, {test: (title, [(load record, label), ...])}, each with the
-    test's measured curve (data/lab/kimura_1985/TEST.csv)."""
+    test's measured curve where data/lab/kimura_1985/TEST.csv holds one."""
     lines = [f"set terminal pngcairo size {700 * len(panels)},600 noenhanced", "set datafile separator ','",
              "set datafile commentschars '#'", f"set output {gp_quoted(png)}", f"set multiplot layout 1,{len(panels)}",
              "set grid", f"set key {key}", "set xlabel 'S/B'", "set ylabel 'q = V/B [kPa]'",
@@ -105,8 +105,9 @@ def plot_beside_kimura(png, panels, stop_s_over_b, key="bottom right"):
     for test, (title, curves) in panels.items():
         plots = [f"{gp_quoted(record)} using 'S_over_B':'q_kPa' with lines lw 2 title {gp_quoted(label)}" for record, label in curves]
         lab = os.path.join(ROOT, "data", "lab", "kimura_1985", test + ".csv")
-        plots.append(f"{gp_quoted(lab)} using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 lc rgb 'black' "
-                     f"title {gp_quoted('Kimura et al. (1985) ' + test)}")
+        if os.path.isfile(lab):
+            plots.append(f"{gp_quoted(lab)} using 'S_over_B':'q_kPa' with points pt 7 ps 0.6 lc rgb 'black' "
+                         f"title {gp_quoted('Kimura et al. (1985) ' + test)}")
         lines += [f"set title {gp_quoted(title)}", "plot " + ", ".join(plots)]
     lines += ["unset multiplot", ""]
     subprocess.run(["gnuplot"], input="\n".join(lines), text=True, check=False)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Kimura footings V85.6 and H86.7 with the regularised sand (docs/footing-study.md, "The
+"""The Kimura footings (V85.6 and H86.7 first) with the regularised sand (docs/footing-study.md, "The
 regularised footing"; results in bench/results/footing_regularised/).
 
 Each case is the half-domain convergence scene of its test (data/scenes/mpm/convergence/, one
@@ -13,8 +13,9 @@ and OUT/q_ult_against_h.png.
 
   python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
-        [,window=B][,set=acst|isotropic|FILE.json][,m=1][,lc=METRES][,kc=0.5]   (TEST V85.6 or H86.7; largest: the graded grid's
-        largest cell, default 4 h; window: its window's half-width and depth in footing widths, default 3;
+        [,window=B][,set=acst|isotropic|FILE.json][,m=1][,lc=METRES][,kc=0.5]   (TEST: one of the reference study's
+        kimura group, V85.6, V75.1, V64.6, H86.7, H76.5, H61.0; largest: the graded grid's largest cell, default 4 h;
+        window: its window's half-width and depth in footing widths, default 3;
         set: the delivered ACST set, the delivered isotropic one (data/parameters/toyoura_isotropic_calibrated.json),
         or a material file relative to the repository, whose plain stem joins the case's name;
         m: the regularisation's over-nonlocal factor; lc, kc: micropolar rotations' length and modulus
@@ -32,6 +33,19 @@ from footing_common import ROOT, gp_quoted, old_rows, read_curve, run_case, scen
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm", "convergence")
 BASE = {"V85.6": "kimura_V85.6_alpha0_h0045.json", "H86.7": "kimura_H86.7_alpha90_h0045.json"}
+SWEEP = os.path.join(ROOT, "data", "sweeps", "reference_study.json")
+BODY_KEYS = ("density", "relative_density_pct", "bedding_angle_deg")
+
+
+def kimura_tests():
+    """The reference study's kimura group, {test: its sand's density, relative density and bedding}, as
+    the sweep (data/sweeps/reference_study.json) defines them: the one place the six tests are named."""
+    with open(SWEEP) as f:
+        cases = json.load(f)["cases"]
+    return {c["name"]: {k: c["set"]["/bodies/0/" + k] for k in BODY_KEYS} for c in cases if "kimura" in c.get("group", [])}
+
+
+KIMURA_TESTS = kimura_tests()
 SETS = {"acst": None, "isotropic": os.path.join(ROOT, "data", "parameters", "toyoura_isotropic_calibrated.json")}
 FIELDS = ["case", "grid", "set", "cell_m", "internal_length_m", "speed_factor", "cfl", "q_ult_kPa", "S_ult_over_B", "wall_s",
           "q_first_peak_kPa", "S_first_peak_over_B", "q_at_SB0.1_kPa", "q_at_SB0.25_kPa", "final_S_over_B",
@@ -40,6 +54,8 @@ FIELDS = ["case", "grid", "set", "cell_m", "internal_length_m", "speed_factor", 
 
 def parse_case(text):
     parts = text.split(",")
+    if parts[0] not in KIMURA_TESTS:
+        sys.exit(f"{text}: TEST is one of {', '.join(KIMURA_TESTS)}")
     c = {"test": parts[0], "h": None, "l": "default", "speed": 1.0, "cfl": 0.5, "grid": "uniform", "set": "acst"}
     for p in parts[1:]:
         k, v = p.split("=", 1)
@@ -70,7 +86,19 @@ def parse_case(text):
 
 
 def scene_of(c, stop, threads):
-    s = scene_with_absolute_paths(os.path.join(SCENES, BASE[c["test"]]))
+    body = KIMURA_TESTS[c["test"]]
+    base = BASE[c["test"]] if c["test"] in BASE else BASE["H86.7" if body["bedding_angle_deg"] == 90 else "V85.6"]
+    s = scene_with_absolute_paths(os.path.join(SCENES, base))
+    s["bodies"][0].update(body)
+    if c["test"] not in BASE:
+        s["description"] = (f"Kimura et al. (1985) test {c['test']}: the convergence scene {base} with the sand of the "
+                            "reference study's sweep (data/sweeps/reference_study.json)")
+        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", c["test"] + ".csv")
+        if os.path.isfile(lab):
+            s["output"].update(lab_curve=lab, lab_label=f"Kimura et al. (1985) {c['test']} (centrifuge)")
+        else:
+            for key in ("lab_curve", "lab_label"):
+                s["output"].pop(key, None)
     s["name"] = c["name"]
     s["grid"]["cell_size"] = c["h"]
     s["footing"]["speed"] *= c["speed"]
