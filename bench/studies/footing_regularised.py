@@ -90,15 +90,11 @@ def scene_of(c, stop, threads):
     base = BASE[c["test"]] if c["test"] in BASE else BASE["H86.7" if body["bedding_angle_deg"] == 90 else "V85.6"]
     s = scene_with_absolute_paths(os.path.join(SCENES, base))
     s["bodies"][0].update(body)
-    if c["test"] not in BASE:
+    if c["test"] not in BASE:  # a test without a convergence scene of its own has no digitised curve either
         s["description"] = (f"Kimura et al. (1985) test {c['test']}: the convergence scene {base} with the sand of the "
                             "reference study's sweep (data/sweeps/reference_study.json)")
-        lab = os.path.join(ROOT, "data", "lab", "kimura_1985", c["test"] + ".csv")
-        if os.path.isfile(lab):
-            s["output"].update(lab_curve=lab, lab_label=f"Kimura et al. (1985) {c['test']} (centrifuge)")
-        else:
-            for key in ("lab_curve", "lab_label"):
-                s["output"].pop(key, None)
+        for key in ("lab_curve", "lab_label"):
+            s["output"].pop(key, None)
     s["name"] = c["name"]
     s["grid"]["cell_size"] = c["h"]
     s["footing"]["speed"] *= c["speed"]

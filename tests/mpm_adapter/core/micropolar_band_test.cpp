@@ -66,32 +66,30 @@ double shear(const std::vector<double>& a, const std::vector<double>& b, std::si
   return std::sqrt((dxx - dyy) * (dxx - dyy) + 4.0 * dxy * dxy);
 }
 
-// Runs the sample to 12 % axial strain. The band's equivalent area (sum g A)^2 / sum g^2 A of the
+// Runs the sample past 12 % axial strain. The band's equivalent area (sum g A)^2 / sum g^2 A of the
 // shear increment g over the particles' areas A is the band's width times its length for a band
 // of uniform shear, and needs no band direction or profile.
 Biaxial run(double h, double lc) {
   Simulation s = mpm_test::build(biaxial(h, lc));
   Biaxial out;
-  std::vector<double> at6;
-  auto strain = [&] { return s.footing().settlement() / height; };
-  while (strain() < strain_to) {
-    const double target = strain() < 0.06 ? 0.06 : strain() < 0.10 ? 0.10 : strain_to;
-    for (const mpm_test::Period& r : mpm_test::run(s, 20, [&](const Simulation& x) { return x.footing().settlement() / height >= target; })) {
+  auto load_to = [&](double strain) {
+    const auto reached = [&](const Simulation& x) { return x.footing().settlement() / height >= strain; };
+    for (const mpm_test::Period& r : mpm_test::run(s, 20, reached)) {
       out.strain.push_back(r.S / height);
       out.ratio.push_back(r.V / width / sigma3);
     }
-    if (target == 0.06) at6 = s.particles().strain;
-    if (target == 0.10) {
-      const Particles& P = s.particles();
-      double sum = 0.0, squares = 0.0;
-      for (std::size_t p = 0; p < P.n; ++p) {
-        const double area = P.volume_initial[p] * (P.F[4 * p] * P.F[4 * p + 3] - P.F[4 * p + 1] * P.F[4 * p + 2]);
-        const double g = shear(at6, P.strain, p);
-        sum += g * area, squares += g * g * area;
-      }
-      out.band_area = sum * sum / squares;
-    }
+  };
+  load_to(0.06);
+  const std::vector<double> at6 = s.particles().strain;
+  load_to(0.10);
+  const Particles& P = s.particles();
+  double sum = 0.0, squares = 0.0;
+  for (std::size_t p = 0; p < P.n; ++p) {
+    const double g = shear(at6, P.strain, p);
+    sum += g * P.volume(p), squares += g * g * P.volume(p);
   }
+  out.band_area = sum * sum / squares;
+  load_to(strain_to);
   return out;
 }
 
