@@ -45,9 +45,11 @@ INSTANTIATE_TEST_SUITE_P(Toyoura, DeliveredSet,
                                            Delivered{"toyoura_isotropic", "toyoura_isotropic_calibrated"}));
 
 // A candidate keeps its report (and only the reference group's set): the values the report
-// states give the objective it states, closings included.
-TEST(CandidateReport, ClosingFitReproducesItsObjective) {
-  const std::string name = "toyoura_acst_closing";
+// states give the objective it states, closings, Table 1 peaks and a free critical state line included.
+class CandidateReport : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CandidateReport, ReproducesItsObjective) {
+  const std::string name = GetParam();
   const FitSpec spec = read_fit_spec(std::string(ACST_SOURCE_DIR) + "/data/calibration/" + name + "_fit.json");
   const Problem problem(spec);
   const json report = json::parse(test::read_text("data/calibration/reports/" + name + "/" + name + "_report.json"));
@@ -61,11 +63,15 @@ TEST(CandidateReport, ClosingFitReproducesItsObjective) {
   const json kept = json::parse(test::read_text("data/calibration/reports/" + name + "/" + name + "_parameters_tatsuoka.json"));
   const Parameters tatsuoka = problem.parameters(theta, "tatsuoka");
   for (const FitVariable& v : problem.variables())
-    if (v.group.empty() || v.group == "tatsuoka")
+    if (v.group.empty() || v.group == "tatsuoka") {
       EXPECT_DOUBLE_EQ(kept["parameters"][v.parameter].get<double>(), tatsuoka.*parameter_info(v.parameter)->member) << v.label;
+    }
   const double cost = problem.residuals({theta}).front().squaredNorm();
   EXPECT_NEAR(cost, report["objective"]["sum_of_squares"].get<double>(), 1e-6 * cost);
 }
+
+INSTANTIATE_TEST_SUITE_P(Toyoura, CandidateReport,
+                         ::testing::Values("toyoura_acst_closing", "toyoura_acst_table1_line", "toyoura_acst_table1_slope"));
 
 }  // namespace
 }  // namespace acst::calibration
