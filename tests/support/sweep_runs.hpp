@@ -2,7 +2,13 @@
 // The sweep tests' shared steps: the small footing every test sweep starts from, acst_sweep's
 // command line run in-process, a file written, a JSON file read, the error a description is
 // refused with, a CSV text's data rows and numbers, and a Markdown text's links.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
+#include <thread>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -39,6 +45,41 @@ inline std::string parse_error(const std::string& text) {
     return e.what();
   }
   return "accepted";
+}
+
+#ifdef ACST_SWEEP_EXE
+// acst_sweep as a process of its own, with `args` (--quiet --no-plot --threads 1 before them),
+// killed (SIGKILL) as soon as `when` exists (or after two minutes). Returns whether the kill
+// found it still running.
+inline bool kill_sweep_when(const std::vector<std::string>& args, const std::filesystem::path& when) {
+  std::vector<std::string> all = {"acst_sweep", "--quiet", "--no-plot", "--threads", "1"};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t child = fork();
+  if (child < 0) return false;
+  if (child == 0) {
+    execv(ACST_SWEEP_EXE, argv.data());
+    _exit(127);
+  }
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!std::filesystem::exists(when) && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFSIGNALED(status);
+}
+#endif
+
+// A sweep's table rows without what differs between two runs of the same cases (time, threads,
+// whether a case was resumed).
+inline nlohmann::json comparable_rows(const std::filesystem::path& dir) {
+  nlohmann::json rows = read_json(dir / "table.json")["cases"];
+  for (nlohmann::json& r : rows)
+    for (const char* k : {"wall_s", "resumed", "threads"}) r.erase(k);
+  return rows;
 }
 
 // The data rows of a CSV text (comment lines and the header left out).

@@ -48,8 +48,17 @@ class Run {
     auto last_checkpoint = start;
     const long long first_step = sim_.step_count();
     if (state_.vtk_frames == 0) write_frame(run_);
+    RunSummary sum;
     try {
       while (!finished()) {
+        if (run_.options.stop_at && WallClock::now() >= *run_.options.stop_at) {
+          checkpoint();
+          progress_.close();
+          sum.interrupted = true;
+          sum.steps = sim_.step_count() - first_step;
+          sum.wall_s = std::chrono::duration<double>(WallClock::now() - start).count();
+          return sum;
+        }
         sim_.step();
         record_step(run_);
         if (frame_due(run_)) write_frame(run_);
@@ -67,7 +76,6 @@ class Run {
     }
     if (state_.period_steps > 0) close_period(run_);
     progress_.close();
-    RunSummary sum;
     sum.steps = sim_.step_count() - first_step;
     sum.wall_s = std::chrono::duration<double>(WallClock::now() - start).count();
     sum.particle_steps_per_s = sum.wall_s > 0 ? static_cast<double>(sum.steps) * sim_.particles().n / sum.wall_s : 0.0;

@@ -5,6 +5,7 @@
 #include "acst_common/files.hpp"
 #include "acst_common/json_fields.hpp"
 #include "acst_common/json_file.hpp"
+#include "acst_sweep/kept_results.hpp"
 #include "acst_sweep/sweep_case.hpp"
 
 namespace acst::mpm {
@@ -21,6 +22,7 @@ CaseRecord record_from(const json& j, const std::string& path) {
     for (const char* k : {"fingerprint", "row"})
       if (!j.contains(k)) f::fail("", std::string("'") + k + "' is required");
     const json& fingerprint = f::object(j["fingerprint"], "/fingerprint");
+    f::allow_keys(fingerprint, {"scene", "materials", "build"}, "/fingerprint");
     for (const char* k : {"scene", "materials"}) {
       if (!fingerprint.contains(k)) f::fail("/fingerprint", std::string("'") + k + "' is required");
       f::object(fingerprint[k], std::string("/fingerprint/") + k);
@@ -46,7 +48,14 @@ CaseRecord parse_case_record(const std::string& text, const std::string& path) {
 }
 
 std::optional<CaseRecord> read_case_record(const std::string& sweep_dir, const std::string& name) {
-  const std::string path = (std::filesystem::path(case_folder(sweep_dir, name)) / sweep_case_record).string();
+  return read_record_in((std::filesystem::path(case_folder(sweep_dir, name)) / sweep_case_record).string());
+}
+
+std::optional<CaseRecord> read_kept_record(const std::string& sweep_dir, const std::string& name) {
+  return read_record_in((std::filesystem::path(kept_case_folder(sweep_dir, name)) / sweep_case_record).string());
+}
+
+std::optional<CaseRecord> read_record_in(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) return std::nullopt;
   return record_from(f::read_json_file(path, what_it_is), path);

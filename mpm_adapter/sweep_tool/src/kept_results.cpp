@@ -11,6 +11,7 @@
 
 #include "acst_common/csv_table.hpp"
 #include "acst_common/files.hpp"
+#include "acst_common/result_folder.hpp"
 #include "acst_sweep/sweep_case.hpp"
 
 namespace acst::mpm {
@@ -96,17 +97,18 @@ std::string rastered_map(const std::string& text, double cell, double x0, double
   return out;
 }
 
+std::string kept_case_folder(const std::string& sweep_dir, const std::string& name) {
+  return (fs::path(sweep_dir) / sweep_kept_folder / name).string();
+}
+
 std::vector<std::string> keep_case_results(const KeepSpec& keep, const SweepCase& c, const std::string& sweep_dir) {
   std::vector<std::string> warnings;
   const fs::path from = case_folder(sweep_dir, c.name);
-  if (!fs::exists(from / "summary.json") && !fs::exists(from / "load_settlement.failed.csv")) return warnings;
-  const fs::path to = fs::path(sweep_dir) / sweep_kept_folder / c.name;
-  std::error_code ec;
-  fs::create_directories(to, ec);
-  if (ec) {
-    warnings.push_back("case '" + c.name + "': cannot make " + to.string() + ": " + ec.message());
-    return warnings;
-  }
+  if (!fs::is_regular_file(from / sweep_case_record)) return warnings;
+  const fs::path kept = kept_case_folder(sweep_dir, c.name);
+  const fs::path to = fs::path(sweep_dir) / sweep_kept_folder / ("." + c.name + ".partial");
+  fs::remove_all(to);
+  fs::create_directories(to);
   const auto copy = [&](const std::string& name, const auto& transform) {
     try {
       const std::string text = common::read_input_file((from / name).string());
@@ -117,15 +119,21 @@ std::vector<std::string> keep_case_results(const KeepSpec& keep, const SweepCase
   };
   const auto as_is = [](const std::string& t) { return t; };
   const auto thinned = [&](const std::string& t) { return decimated_csv(t, keep.rows); };
+  copy(sweep_case_record, as_is);
   if (fs::exists(from / "summary.json")) copy("summary.json", as_is);
   for (const char* record : {"load_settlement.csv", "load_settlement.failed.csv"})
     if (fs::exists(from / record)) copy(record, [&](const std::string& t) { return decimated_csv(t, keep.rows, "q_kPa"); });
   for (const ParticleTrack& p : c.scene.output.particle_histories)
     if (fs::exists(from / ("particle_" + p.name + ".csv"))) copy("particle_" + p.name + ".csv", thinned);
-  if (keep.maps.empty()) return warnings;
+  const auto publish = [&] {
+    const std::string left = common::publish_folder(to.string(), kept.string());
+    if (!left.empty()) warnings.push_back("case '" + c.name + "': " + left);
+    return warnings;
+  };
+  if (keep.maps.empty()) return publish();
   if (!c.scene.footing) {
     warnings.push_back("case '" + c.name + "': no footing to centre its maps on; none kept");
-    return warnings;
+    return publish();
   }
   double top = -std::numeric_limits<double>::infinity();
   for (const BodySpec& b : c.scene.bodies) top = std::max(top, b.y_max);
@@ -140,7 +148,7 @@ std::vector<std::string> keep_case_results(const KeepSpec& keep, const SweepCase
       return rastered_map(t, keep.map_cell_over_B * B, x0, x0 + 2.0 * half, y0, top + 0.25 * B);
     });
   }
-  return warnings;
+  return publish();
 }
 
 }  // namespace acst::mpm

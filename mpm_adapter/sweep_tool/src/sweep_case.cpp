@@ -122,7 +122,11 @@ std::string case_partial_folder(const std::string& sweep_dir, const std::string&
 json case_fingerprint(const SweepCase& c) {
   json materials = json::object();
   for (const MaterialSpec& m : c.scene.materials) materials[m.name] = json::parse(m.json_text);
-  return {{"scene", json::parse(c.scene.text)}, {"materials", materials}};
+  json fingerprint = {{"scene", json::parse(c.scene.text)}, {"materials", materials}};
+#ifdef ACST_SWEEP_MARCH_NATIVE
+  fingerprint["build"] = {{"march_native", true}};  // absent in the default build, whose records predate it
+#endif
+  return fingerprint;
 }
 
 ordered_json case_row(const SweepCase& c, const std::string& dir, CaseStatus status, const std::string& message,
@@ -215,7 +219,8 @@ void start_partial(const std::string& partial, const std::string& fingerprint_pa
 
 }  // namespace
 
-ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const std::vector<double>& load_at_S_over_B) {
+ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const std::vector<double>& load_at_S_over_B,
+                      const std::string& rerun_note) {
   const std::string partial = case_partial_folder(options.sweep_dir, c.name);
   const std::string checkpoint = (fs::path(partial) / "checkpoint.bin").string();
   const std::string fingerprint_path = partial + ".json";
@@ -224,6 +229,7 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
   run.output_dir = partial;
   run.quiet = true;
   run.plot = options.plot;
+  run.stop_at = options.stop_at;
   // An interrupted run of this very case goes on; anything else there is an earlier case's.
   std::string note;
   if (resumable(checkpoint, fingerprint_path, fingerprint, note)) {
@@ -237,20 +243,27 @@ ordered_json run_case(const SweepCase& c, const CaseRunOptions& options, const s
   if (options.threads > 0) scene.solver.threads = options.threads;
   CaseStatus status = CaseStatus::done;
   std::string message;
+  RunSummary summary;
   try {
     try {
-      run_scene(scene, run);
+      summary = run_scene(scene, run);
     } catch (const CheckpointError& e) {
       // Refused before the run wrote anything: the checkpoint is only a shortcut.
       note = std::string(e.what()) + ": discarded, the case ran afresh";
       run.resume_from.clear();
       start_partial(partial, fingerprint_path, fingerprint);
-      run_scene(scene, run);
+      summary = run_scene(scene, run);
     }
   } catch (const std::exception& e) {
     status = CaseStatus::failed;
     message = e.what();
   }
+  if (summary.interrupted)  // its checkpoint and fingerprint stay in place for the next run
+    return case_row(c, "", CaseStatus::pending,
+                    "stopped by the budget after " + std::to_string(summary.steps) +
+                        " steps; the next run resumes it from its checkpoint",
+                    load_at_S_over_B);
+  if (!rerun_note.empty()) message = rerun_note + (message.empty() ? "" : "; " + message);
   // The run's message names files by where they were written; they are read where they end up.
   const std::string published = case_folder(options.sweep_dir, c.name);
   for (std::size_t at = message.find(partial); at != std::string::npos; at = message.find(partial, at + published.size()))

@@ -193,6 +193,12 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
     return all_above ? CheckStatus::holds : any_below ? CheckStatus::fails : CheckStatus::within_band;
   };
   bool missing = false;
+  bool pending = false;  // a case the check reads has not run
+  for (const std::string& name : c.cases) {
+    const ordered_json* row = row_of(rows, name);
+    pending = pending || !row || status_of(*row) == CaseStatus::pending;
+  }
+  const CheckStatus unknown = pending ? CheckStatus::pending : CheckStatus::open;
   if (c.columns.size() == 2) {  // within each case, the first column above the second
     std::vector<std::pair<double, double>> pairs;
     for (const std::string& name : c.cases) {
@@ -202,7 +208,7 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
       r.numbers += (r.numbers.empty() ? "" : "; ") + shown_value(rows, name, a) + " vs " + number_text(b);
     }
     if (band) r.numbers += band_text(*band);
-    r.status = missing ? CheckStatus::open : steps(pairs);
+    r.status = missing ? unknown : steps(pairs);
     return r;
   }
   std::vector<double> v;
@@ -299,18 +305,20 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
     case Expectation::report: break;
   }
   if (band) r.numbers += band_text(*band);
-  r.status = missing ? CheckStatus::open : status;
+  r.status = missing ? unknown : status;
   return r;
 }
 
 std::string verdict(const std::vector<CheckResult>& results) {
-  std::size_t held = 0, failed = 0, open = 0, within = 0;
+  std::size_t held = 0, failed = 0, open = 0, within = 0, pending = 0;
   for (const CheckResult& r : results) {
+    pending += r.status == CheckStatus::pending;
     held += r.status == CheckStatus::holds;
     failed += r.status == CheckStatus::fails;
     open += r.status == CheckStatus::open;
     within += r.status == CheckStatus::within_band;
   }
+  if (pending > 0) return "not decided: cases pending";
   if (open > 0) return "open";
   const std::string where = within > 0 ? " where decided" : "";
   if (failed == 0 && held == 0) return within > 0 ? "not decided within the band" : "reported";

@@ -45,9 +45,10 @@ class MpiRanks : public CaseDistributor {
     MPI_Allreduce(&mine, &every, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD);
     return every != 0;
   }
-  void distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished) override {
+  void distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished,
+                  const MayStart& may_start) override {
     if (rank_ == 0)
-      coordinate(pending, run_one, finished);
+      coordinate(pending, run_one, finished, may_start);
     else
       work(run_one);
     MPI_Request barrier;
@@ -73,8 +74,15 @@ class MpiRanks : public CaseDistributor {
 
   // Rank 0 runs cases in a thread of its own while this thread (the only one that calls MPI)
   // answers the workers.
-  void coordinate(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished) {
+  void coordinate(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished,
+                  const MayStart& may_start) {
     std::deque<std::size_t> queue(pending.begin(), pending.end());
+    // Drops the cases at the queue's front that may not start now (the budget): none of them
+    // would fit later either, as the time left only shrinks.
+    const auto next_startable = [&] {
+      while (!queue.empty() && !may_start(queue.front())) queue.pop_front();
+      return !queue.empty();
+    };
     int remote_left = size_ - 1;  // workers not yet told that there is nothing left
     std::thread local;
     std::atomic<bool> local_done{false};
@@ -87,7 +95,7 @@ class MpiRanks : public CaseDistributor {
         finished(local_case, local_row);
         moved = true;
       }
-      if (!local.joinable() && !queue.empty()) {
+      if (!local.joinable() && next_startable()) {
         local_case = queue.front();
         queue.pop_front();
         local_done = false;
@@ -109,7 +117,7 @@ class MpiRanks : public CaseDistributor {
         if (newline != std::string::npos)
           finished(std::stoul(report.substr(0, newline)), report.substr(newline + 1));
         int next = -1;
-        if (!queue.empty()) {
+        if (next_startable()) {
           next = static_cast<int>(queue.front());
           queue.pop_front();
         } else {

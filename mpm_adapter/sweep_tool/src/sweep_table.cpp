@@ -113,7 +113,8 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
           common::one_line(command) + "\n```\n\n" + std::to_string(done) + " of " + std::to_string(rows.size()) +
           " cases done. Verdicts are judged on the table below by the checks the description states. A check reads the "
           "cases that ran to their end and those that failed after their peak (the record up to the failure); it is "
-          "open while a case it reads has not (docs/sweeps.md, \"Findings\").\n\n";
+          "open while a case it reads has not, and *not decided: cases pending* while a case it reads has not run yet "
+          "(docs/sweeps.md, \"Findings\").\n\n";
     if (!sweep.bands.empty()) {
       md += "## Bands\n\nA check is judged against the band of its column: the spread the method itself leaves in "
             "that column (cell, loading speed, round-off). It holds or fails only where the whole band agrees; "

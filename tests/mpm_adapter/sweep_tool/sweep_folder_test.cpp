@@ -56,7 +56,7 @@ class NoWorkers : public CaseDistributor {
   bool coordinator() const override { return true; }
   int workers() const override { return 1; }
   bool all(bool ok) override { return ok; }
-  void distribute(const std::vector<std::size_t>& pending, const RunOne&, const Finished&) override { handed_out = pending; }
+  void distribute(const std::vector<std::size_t>& pending, const RunOne&, const Finished&, const MayStart&) override { handed_out = pending; }
   std::vector<std::size_t> handed_out;
 };
 

@@ -3,18 +3,13 @@
 // finished cases, reports a failed one without stopping the others, and a sweep killed in the middle
 // of a case resumes from the checkpoint to the same table as a run that was never interrupted.
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
-#include <thread>
 
 #include "acst_common/files.hpp"
 #include "acst_common/input_error.hpp"
@@ -35,6 +30,7 @@ using sweep_runs::data_rows;
 using sweep_runs::numbers_in;
 using sweep_runs::parse_error;
 using sweep_runs::relative_links;
+using sweep_runs::comparable_rows;
 using sweep_runs::read_json;
 using sweep_runs::sweep;
 using sweep_runs::write;
@@ -55,14 +51,6 @@ using acst::test::Cli;
 
 
 
-// The table's rows without what may differ between two runs of the same cases (time, threads,
-// whether a case was resumed).
-json comparable_rows(const fs::path& dir) {
-  json rows = read_json(dir / "table.json")["cases"];
-  for (json& r : rows)
-    for (const char* k : {"wall_s", "resumed", "threads"}) r.erase(k);
-  return rows;
-}
 
 // (S/B, q) of each row of an acst_mpm load record, read by column name.
 std::vector<std::vector<double>> load_record(const fs::path& csv) {
@@ -324,21 +312,9 @@ TEST(SweepRun, AKilledSweepResumesToTheSameTable) {
   const std::string straight = (dir / "straight").string(), killed = (dir / "killed").string();
   ASSERT_EQ(sweep({"--quiet", "--no-plot", "--threads", "1", "--output", straight, file.string()}).rc, 0);
 
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    execl(ACST_SWEEP_EXE, "acst_sweep", "--quiet", "--no-plot", "--threads", "1", "--output", killed.c_str(),
-          file.string().c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
   const fs::path checkpoint = fs::path(killed) / "cases" / ".bedding_0.partial" / "checkpoint.bin";
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < give_up)
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  kill(child, SIGKILL);
-  int status = 0;
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep ended before it could be killed";
+  ASSERT_TRUE(sweep_runs::kill_sweep_when({"--output", killed, file.string()}, checkpoint))
+      << "the sweep ended before it could be killed";
   ASSERT_TRUE(fs::exists(checkpoint));
   ASSERT_FALSE(fs::exists(fs::path(killed) / "cases" / "bedding_0"));
 
@@ -362,7 +338,7 @@ class RecordingWorkers : public CaseDistributor {
   bool coordinator() const override { return true; }
   int workers() const override { return n_; }
   bool all(bool ok) override { return ok; }
-  void distribute(const std::vector<std::size_t>& pending, const RunOne&, const Finished&) override { order = pending; }
+  void distribute(const std::vector<std::size_t>& pending, const RunOne&, const Finished&, const MayStart&) override { order = pending; }
   std::vector<std::size_t> order;
 
  private:

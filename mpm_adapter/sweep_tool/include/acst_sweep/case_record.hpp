@@ -26,5 +26,9 @@ CaseRecord parse_case_record(const std::string& text, const std::string& path);
 // The record of case `name` in the sweep's folder; none when it has no record file. Throws
 // InputError naming the file when it cannot be read or is not a record.
 std::optional<CaseRecord> read_case_record(const std::string& sweep_dir, const std::string& name);
+// The same of its kept results (SWEEP/kept/NAME/sweep_case.json).
+std::optional<CaseRecord> read_kept_record(const std::string& sweep_dir, const std::string& name);
+// The record at `path`; none when there is no such file.
+std::optional<CaseRecord> read_record_in(const std::string& path);
 
 }  // namespace acst::mpm

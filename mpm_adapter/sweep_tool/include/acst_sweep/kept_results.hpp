@@ -21,8 +21,14 @@ std::string decimated_csv(const std::string& text, std::size_t rows, const std::
 // that holds a particle, at the cell's centre, values to 4 significant digits.
 std::string rastered_map(const std::string& text, double cell, double x0, double x1, double y0, double y1);
 
-// Writes SWEEP/kept/CASE/ for a case whose folder holds a run (every file atomically); returns
-// what could not be kept (a map the case did not write, a file that cannot be read), as warnings.
+// Writes SWEEP/kept/CASE/ for a case whose folder holds a run: its record (sweep_case.json, the
+// fingerprint and the row) and what `keep` names, built in a hidden folder and put in place whole
+// (common::publish_folder), so that a stop at any moment leaves the earlier kept folder or the
+// new one, never a part. Returns what could not be kept (a map the case did not write, a file
+// that cannot be read), as warnings; throws std::runtime_error when the folder cannot be written.
 std::vector<std::string> keep_case_results(const KeepSpec& keep, const SweepCase& c, const std::string& sweep_dir);
+
+// The folder of a case's kept results.
+std::string kept_case_folder(const std::string& sweep_dir, const std::string& name);
 
 }  // namespace acst::mpm

@@ -58,16 +58,17 @@ std::vector<Band> read_bands(const nlohmann::json& j, const std::string& path);
 std::vector<Finding> read_findings(const nlohmann::json& j, const std::string& path,
                                    const std::vector<std::string>& case_names);
 
-// What a check says about the rows: open, a value is missing (the case has not run, failed, or
-// its record does not reach the column); reported, no verdict asked; within band, the
-// difference that decides lies inside the column's band, so the rows cannot tell.
-enum class CheckStatus { holds, fails, open, reported, within_band };
+// What a check says about the rows: open, a value is missing (the case failed, or its record does
+// not reach the column); pending, a case it reads has not run yet (a sweep in pieces: never
+// judged on the cases there are); reported, no verdict asked; within band, the difference that
+// decides lies inside the column's band, so the rows cannot tell.
+enum class CheckStatus { holds, fails, open, reported, within_band, pending };
 
 // The names in the report.
 inline constexpr common::Named<CheckStatus> check_status_names[] = {
     {"holds", CheckStatus::holds},       {"fails", CheckStatus::fails},
     {"open", CheckStatus::open},         {"reported", CheckStatus::reported},
-    {"within the band", CheckStatus::within_band}};
+    {"within the band", CheckStatus::within_band}, {"not decided: cases pending", CheckStatus::pending}};
 
 inline const char* name_of(CheckStatus s) { return common::name_in(check_status_names, s); }
 
@@ -81,7 +82,8 @@ CheckResult judge(const FindingCheck& check, const std::vector<nlohmann::ordered
                   const std::vector<Band>& bands = {});
 
 // "reproduced", "not reproduced", "partly reproduced", "not decided within the band" (no check
-// holds or fails beyond its band) or "open", from its checks' results.
+// holds or fails beyond its band), "open" or "not decided: cases pending" (a check reads a case
+// not yet run), from its checks' results.
 std::string verdict(const std::vector<CheckResult>& results);
 
 }  // namespace acst::mpm

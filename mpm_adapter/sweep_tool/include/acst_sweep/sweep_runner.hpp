@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "acst_sweep/case_selection.hpp"
 #include "acst_sweep/sweep.hpp"
 
 namespace acst::mpm {
@@ -19,14 +20,17 @@ class CaseDistributor {
  public:
   using RunOne = std::function<std::string(std::size_t)>;               // case index -> its row (JSON text)
   using Finished = std::function<void(std::size_t, const std::string&)>;  // on the coordinator, as each ends
+  using MayStart = std::function<bool(std::size_t)>;  // on the coordinator, just before a case is handed out
   virtual ~CaseDistributor() = default;
   virtual bool coordinator() const = 0;
   virtual int workers() const = 0;
   // Whether every process says `ok` (all processes call it at the same point).
   virtual bool all(bool ok) = 0;
-  // Coordinator: runs each case of `pending` once, somewhere, and calls `finished` for each. The
-  // others: run the cases handed to them until there are none left (`pending` is not used).
-  virtual void distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished) = 0;
+  // Coordinator: runs each case of `pending` that `may_start` allows when its turn comes, once,
+  // somewhere, and calls `finished` for each; those it refuses are skipped. The others: run the
+  // cases handed to them until there are none left (`pending` is not used).
+  virtual void distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished,
+                          const MayStart& may_start) = 0;
 };
 
 // One process, the cases in turn.
@@ -35,7 +39,8 @@ class InTurn : public CaseDistributor {
   bool coordinator() const override { return true; }
   int workers() const override { return 1; }
   bool all(bool ok) override { return ok; }
-  void distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished) override;
+  void distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished,
+                  const MayStart& may_start) override;
 };
 
 struct SweepRunOptions {
@@ -45,17 +50,35 @@ struct SweepRunOptions {
   bool retry_failed = false;  // run failed cases again instead of reporting them as they are
   std::string report;         // a copy of report.md here too ("" : none)
   std::string command;        // the command line, for the report
+  double budget_minutes = 0;  // --budget (0: none), counted from the call of run_sweep
+  // The rate the budget assumes before any case of the folder has run whole, in particle-steps a
+  // second a thread (0: assumed_particle_steps_per_s_thread, sweep_budget.hpp).
+  double assumed_rate = 0;
+  Shard shard;                // --shard K/N
+  std::vector<std::string> only;  // --only: names or shell patterns
 };
 
-// Exit status: 0 every case done; 1 a case failed (the others ran; the table says which);
-// 2 the output folder cannot be used (nothing is run or written).
+// The exit status of a run stopped by its budget with cases waiting (sysexits' EX_TEMPFAIL: a
+// batch system requeues on it).
+inline constexpr int exit_budget_spent = 75;
+
+// Exit status: 0 every case of this run's selection done; 1 a case failed (the others ran; the
+// table says which); 2 the output folder cannot be used (nothing is run or written); 75 the
+// budget ended with cases waiting (exit_budget_spent).
 int run_sweep(const SweepSpec& sweep, const SweepRunOptions& options, CaseDistributor& where, std::ostream& out,
               std::ostream& err);
 
-// acst_sweep --replot: runs nothing; the figures and the report drawn again from the folder's
-// table.json (which must list this description's cases) and kept results. 0 when drawn, 2 when
-// the folder cannot be used.
+// acst_sweep --replot: runs nothing; the table, the figures and the report drawn again from what
+// the folder keeps (case folders and kept results; the cases with neither listed as pending).
+// 0 when drawn, 2 when the folder cannot be used.
 int replot_sweep(const SweepSpec& sweep, const SweepRunOptions& options, std::ostream& out, std::ostream& err);
+
+// acst_sweep --gather DIR... --output OUT: the kept results of the sweep folders `from` (shards
+// run apart, pieces from other machines) merged into OUT with one table, report and figures. A
+// folder of another description, or a case kept in two folders with different rows, is refused
+// (2, nothing written); a case in none stays pending.
+int gather_sweeps(const SweepSpec& sweep, const std::vector<std::string>& from, const SweepRunOptions& options,
+                  std::ostream& out, std::ostream& err);
 
 // acst_sweep's command line (the usage text says it all). `where`: MPI ranks when the tool runs
 // under mpirun; null: the cases in turn. `default_threads`: threads per case when --threads is
