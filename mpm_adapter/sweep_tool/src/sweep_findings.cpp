@@ -237,12 +237,17 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
     case Expectation::similar:
     case Expectation::different: {
       const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-      const double spread = *hi / *lo - 1.0, u = width(*hi, *hi) / *lo;  // the band, in the spread's terms
+      // The spread relative to the value of smallest size where all have one sign (hi / lo - 1 for
+      // positive values, as before); across zero, or at it, relative to the largest size, so that
+      // the scale never vanishes. Values all zero are alike: spread 0.
+      const double a = std::fabs(*lo), b = std::fabs(*hi);
+      const double scale = (*lo > 0 || *hi < 0) ? std::min(a, b) : std::max(a, b);
+      const double spread = scale > 0 ? (*hi - *lo) / scale : 0.0;
+      const double u = scale > 0 ? width(*hi, *lo) / scale : 0.0;  // the band, in the spread's terms
       const bool similar = c.expect == Expectation::similar;
       const auto meets = [&](double s) { return similar ? s <= c.within : s > c.within; };
-      status = *lo > 0 ? status_of_interval(meets(spread + (similar ? u : -u)), !meets(spread - (similar ? u : -u)),
-                                            meets(spread), band != nullptr)
-                       : CheckStatus::fails;
+      status = status_of_interval(meets(spread + (similar ? u : -u)), !meets(spread - (similar ? u : -u)), meets(spread),
+                                  band != nullptr);
       r.numbers += "; spread " + number_text(100.0 * spread) + " % (limit " + number_text(100.0 * c.within) + " %)";
       break;
     }

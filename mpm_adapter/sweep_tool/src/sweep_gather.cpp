@@ -13,6 +13,7 @@
 #include "acst_sweep/kept_results.hpp"
 #include "acst_sweep/sweep_case.hpp"
 #include "acst_sweep/sweep_figures.hpp"
+#include "acst_sweep/sweep_folder.hpp"
 #include "acst_sweep/sweep_runner.hpp"
 #include "acst_sweep/sweep_state.hpp"
 #include "acst_sweep/sweep_table.hpp"
@@ -56,8 +57,9 @@ int gather_sweeps(const SweepSpec& sweep, const std::vector<std::string>& from, 
       const fs::path dir(from[k]);
       if (fs::exists(opt.output_dir) && fs::exists(dir) && fs::equivalent(dir, opt.output_dir))
         throw common::InputError("--gather '" + from[k] + "' is the --output folder; gather into another one");
+      require_sound_sweep_folder(from[k]);
       const fs::path recorded = dir / "sweep.json";
-      if (!fs::is_regular_file(recorded))
+      if (!fs::is_regular_file(fs::symlink_status(recorded)))
         throw common::InputError("--gather '" + from[k] + "': not a sweep's folder (it has no sweep.json)");
       const json theirs = json::parse(common::read_input_file(recorded.string()), nullptr, false);
       if (theirs != description)
@@ -83,6 +85,7 @@ int gather_sweeps(const SweepSpec& sweep, const std::vector<std::string>& from, 
     for (std::size_t i = 0; i < sweep.cases.size(); ++i)
       if (source[i] < 0) rows[i] = case_row(sweep.cases[i], "", CaseStatus::pending, "", sweep.load_at_S_over_B);
     common::require_own_folder(opt.output_dir, is_sweep_output_name);
+    require_sound_sweep_folder(opt.output_dir);
     lock.emplace(opt.output_dir, sweep_lock_file, "acst_sweep");
     // Cases already in the output are those of an earlier gather: replaced by the sources'.
     fs::create_directories(fs::path(opt.output_dir) / sweep_kept_folder);

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <regex>
 #include <set>
 
 #include "acst_common/files.hpp"
@@ -210,7 +211,14 @@ KeepSpec read_keep(const json& k, const std::string& p) {
     if (!k["maps"].is_array()) f::fail(p + "/maps", "expected an array of map names (FIELD_SB0.500, FIELD_peak)");
     for (std::size_t i = 0; i < k["maps"].size(); ++i) {
       const std::string q = p + "/maps/" + std::to_string(i);
-      keep.maps.push_back(common::require_plain_stem(f::string(k["maps"][i], q), q));
+      const std::string map = common::require_plain_stem(f::string(k["maps"][i], q), q);
+      // A map is kept as MAP.csv beside the case's record, summary, load record and histories: a
+      // name of another form (load_settlement, particle_A) replaced one of them with a raster.
+      static const std::regex map_stem(R"(.+_(SB[0-9]+(\.[0-9]+)?|peak))");
+      if (!std::regex_match(map, map_stem))
+        f::fail(q, "'" + map + "' is not a map's name: FIELD_SB0.500 (the field at an S/B) or FIELD_peak (at the peak), "
+                   "as the case's scene writes its maps");
+      keep.maps.push_back(map);
     }
   }
   if (k.contains("rows")) keep.rows = static_cast<std::size_t>(f::integer(k["rows"], p + "/rows", 2, 1000000));

@@ -22,6 +22,7 @@
 #include "acst_sweep/sweep_budget.hpp"
 #include "acst_sweep/sweep_case.hpp"
 #include "acst_sweep/sweep_figures.hpp"
+#include "acst_sweep/sweep_folder.hpp"
 #include "acst_sweep/sweep_state.hpp"
 #include "acst_sweep/sweep_table.hpp"
 
@@ -37,30 +38,6 @@ void InTurn::distribute(const std::vector<std::size_t>& pending, const RunOne& r
 }
 
 namespace {
-
-// Entries of SWEEP/cases that a sweep writes: case folders (plain names, each with its record,
-// which is written before the folder is published) and the hidden partial folders, fingerprints
-// and publishing leftovers. Anything else is the user's: a rerun would replace a folder named
-// like a case, so it is refused untouched.
-void require_own_cases_folder(const std::string& dir) {
-  const fs::path cases = fs::path(dir) / sweep_cases_folder;
-  if (!fs::exists(cases)) return;
-  if (!fs::is_directory(cases)) throw common::InputError("'" + cases.string() + "' is not a folder");
-  const auto refuse = [&](const std::string& name, const std::string& what) {
-    throw common::InputError("the sweep folder '" + cases.string() + "' holds '" + name + "', " + what +
-                             ", which acst_sweep does not write: move it away, or choose an empty folder or one of "
-                             "an earlier sweep");
-  };
-  for (const fs::directory_entry& e : fs::directory_iterator(cases)) {
-    const std::string name = e.path().filename().string();
-    const bool hidden_own = name.size() > 1 && name[0] == '.' &&
-                            (name.find(".partial") != std::string::npos || common::is_temporary_name(name));
-    if (hidden_own) continue;
-    if (e.is_symlink() || !e.is_directory()) refuse(name, e.is_symlink() ? "a link" : "a file");
-    if (!fs::is_regular_file(e.path() / sweep_case_record) || fs::is_symlink(e.path() / sweep_case_record))
-      refuse(name, std::string("a folder without a case record (") + sweep_case_record + ")");
-  }
-}
 
 struct Plan {
   std::vector<CaseState> states;
@@ -208,7 +185,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
     try {
       common::require_own_folder(opt.output_dir, is_sweep_output_name);
       lock.emplace(opt.output_dir, sweep_lock_file, "acst_sweep");
-      require_own_cases_folder(opt.output_dir);
+      require_sound_sweep_folder(opt.output_dir);
       plan = plan_sweep(sweep, opt);
       fs::create_directories(fs::path(opt.output_dir) / sweep_cases_folder);
       common::write_file_atomically((fs::path(opt.output_dir) / "sweep.json").string(),
@@ -344,6 +321,7 @@ int replot_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, std::ostrea
   std::optional<common::FolderLock> lock;
   try {
     common::require_own_folder(opt.output_dir, is_sweep_output_name);
+    require_sound_sweep_folder(opt.output_dir);
     const fs::path dir(opt.output_dir);
     if (!fs::is_regular_file(dir / "table.json") && !fs::is_directory(dir / sweep_kept_folder) &&
         !fs::is_directory(dir / sweep_cases_folder))

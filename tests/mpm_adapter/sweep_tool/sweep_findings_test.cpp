@@ -215,3 +215,35 @@ TEST(SweepFindings, BadChecksNameTheirPath) {
     EXPECT_NE(message.find(b.says), std::string::npos) << b.text << "\n" << message;
   }
 }
+
+namespace acst::test::sweep_findings_test {
+
+// A relative spread needs a scale that does not vanish: values at zero, near it or negative (H, M,
+// heave, the asymmetry) read as they are. Equal values are alike whatever their sign; -2 and -1
+// differ by 100 % of the smaller size, as 1 and 2 do; 0 and 1 by 100 % of the larger.
+TEST(SweepFindings, SimilarAndDifferentHoldAtZeroAndForNegativeValues) {
+  const auto judged = [](double x, double y, const char* expect, double within) {
+    FindingCheck c;
+    c.expect = expect == std::string("similar") ? Expectation::similar : Expectation::different;
+    c.cases = {"x", "y"};
+    c.columns = {"v"};
+    c.within = within;
+    const std::vector<ordered_json> rows = {{{"case", "x"}, {"status", "done"}, {"v", x}},
+                                            {{"case", "y"}, {"status", "done"}, {"v", y}}};
+    const CheckResult r = judge(c, rows);
+    EXPECT_EQ(r.numbers.find("nan"), std::string::npos) << r.numbers;
+    return std::string(name_of(r.status));
+  };
+  EXPECT_EQ(judged(0.0, 0.0, "similar", 0.01), "holds");
+  EXPECT_EQ(judged(0.0, 0.0, "different", 0.01), "fails");
+  EXPECT_EQ(judged(-5.0, -5.0, "similar", 0.01), "holds");
+  EXPECT_EQ(judged(-2.0, -1.0, "similar", 0.99), "fails");
+  EXPECT_EQ(judged(-2.0, -1.0, "similar", 1.0), "holds");
+  EXPECT_EQ(judged(-2.0, -1.0, "different", 0.5), "holds");
+  EXPECT_EQ(judged(1.0, 2.0, "similar", 1.0), "holds");
+  EXPECT_EQ(judged(0.0, 1.0, "similar", 0.99), "fails");
+  EXPECT_EQ(judged(-1.0, 1.0, "similar", 2.0), "holds");  // across zero: 2 of the larger size 1
+  EXPECT_EQ(judged(-1.0, 1.0, "similar", 1.9), "fails");
+}
+
+}  // namespace acst::test::sweep_findings_test

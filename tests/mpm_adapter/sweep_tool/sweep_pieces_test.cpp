@@ -5,6 +5,7 @@
 // study in a fresh clone) runs only what is missing and runs again what no longer matches; bad
 // flags are refused before anything is written.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -221,6 +222,62 @@ TEST(SweepFindings, ACheckOnAPendingCaseIsNotDecided) {
   EXPECT_EQ(verdict({r, CheckResult{CheckStatus::holds, ""}}), "not decided: cases pending");
   const std::vector<nlohmann::ordered_json> failed = {rows[0], {{"case", "b"}, {"status", "failed"}}};
   EXPECT_EQ(judge(check, failed).status, CheckStatus::open);
+}
+
+}  // namespace acst::test::sweep_pieces_test
+
+namespace acst::test::sweep_pieces_test {
+
+// Links planted in a sweep's folder (at figures/, kept/, a kept case, a kept file: to the user's
+// folder, /dev/zero or a FIFO) are refused by a run, --replot and --gather alike, naming the
+// entry, before anything is read or written; the user's files they point to are left as they are.
+TEST(SweepPieces, ASweepNeverFollowsALinkOrReadsASpecialFileInItsFolder) {
+  const fs::path dir = acst::test::scratch_folder("sweep_pieces_links");
+  const fs::path file = write(dir / "sweep.json", two_beddings());
+  ASSERT_EQ(run(dir / "made", file).rc, 0);
+  const fs::path users = dir / "users";
+  fs::create_directories(users / "bedding_0");
+  write(users / "bedding_0" / "sweep_case.json", "mine");
+  write(users / "table.json", "mine too");
+  fs::create_directories(dir / "fifo_dir");
+  ASSERT_EQ(mkfifo((dir / "fifo_dir" / "fifo").c_str(), 0600), 0);
+  struct Plant {
+    std::string at;       // the entry replaced by a link, under the sweep folder
+    fs::path to;          // what it points to; empty: a FIFO in its place
+    std::string says;     // in the refusal
+  };
+  const std::vector<Plant> plants = {
+      {"figures", users, "holds 'figures', a link"},
+      {"kept", users, "holds 'kept', a link"},
+      {"kept/bedding_0", users / "bedding_0", "holds 'bedding_0', a link"},
+      {"kept/bedding_0/load_settlement.csv", "/dev/zero", "holds 'load_settlement.csv', a link"},
+      {"kept/bedding_0/summary.json", dir / "fifo_dir" / "fifo", "holds 'summary.json', a link"},
+      {"kept/bedding_0/load_settlement.csv", "", "holds 'load_settlement.csv', something other than a plain file"},
+  };
+  for (const Plant& p : plants) {
+    const fs::path out = dir / ("planted_" + std::to_string(&p - plants.data()));
+    fs::copy(dir / "made", out, fs::copy_options::recursive);
+    fs::remove_all(out / "cases");
+    fs::remove_all(out / p.at);
+    fs::create_directories(out / p.at);
+    fs::remove(out / p.at);
+    if (p.to.empty())  // a FIFO in place of the file
+      ASSERT_EQ(mkfifo((out / p.at).c_str(), 0600), 0);
+    else
+      fs::create_symlink(p.to, out / p.at);
+    const std::vector<std::string> before = acst::test::everything_under(dir);
+    for (const std::vector<std::string>& mode : {std::vector<std::string>{}, std::vector<std::string>{"--replot"}}) {
+      const Cli c = run(out, file, mode);
+      EXPECT_EQ(c.rc, 2) << p.at;
+      EXPECT_NE(c.err.find(p.says), std::string::npos) << c.err;
+    }
+    const Cli g = sweep({"--quiet", "--no-plot", "--gather", out.string(), "--output", (dir / "gathered").string(), file.string()});
+    EXPECT_EQ(g.rc, 2) << p.at;
+    EXPECT_NE(g.err.find(p.says), std::string::npos) << g.err;
+    EXPECT_EQ(acst::test::everything_under(dir), before) << p.at;
+  }
+  EXPECT_EQ(text_of(users / "bedding_0" / "sweep_case.json"), "mine");
+  EXPECT_EQ(text_of(users / "table.json"), "mine too");
 }
 
 }  // namespace acst::test::sweep_pieces_test

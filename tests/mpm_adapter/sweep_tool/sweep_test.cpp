@@ -595,4 +595,10 @@ TEST(KeptResults, BadKeepDescriptionsNameTheirJsonPath) {
   EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"map_window_over_B": [4]}})")).find("/gather/keep/map_window_over_B"),
             std::string::npos);
   EXPECT_NE(parse_error(description(one, R"("gather": {"keep": {"colour": 1}})")).find("colour"), std::string::npos);
+  // A map named like another kept file replaced it with a raster: a map's name has a map's form.
+  for (const char* name : {"load_settlement", "particle_A", "summary", "sweep_case", "load_settlement.failed", "N_SB", "_peak"}) {
+    const std::string message =
+        parse_error(description(one, std::string(R"("gather": {"keep": {"maps": ["N_SB0.5", ")") + name + R"("]}})"));
+    EXPECT_NE(message.find("/gather/keep/maps/1: '" + std::string(name) + "' is not a map's name"), std::string::npos) << message;
+  }
 }
