@@ -104,7 +104,8 @@ TEST(SweepPieces, WholeShardsAndABudgetEndInOneTable) {
             std::string::npos)
       << out.str();
   EXPECT_TRUE(fs::exists(dir / "budget" / "cases" / ".bedding_0.partial" / "checkpoint.bin"));
-  for (const json& r : read_json(dir / "budget" / "table.json")["cases"]) EXPECT_EQ(r["status"], "pending");
+  const json stopped = read_json(dir / "budget" / "table.json");
+  for (const json& r : stopped["cases"]) EXPECT_EQ(r["status"], "pending");
   // Again without a budget: the first case resumes from its checkpoint, the second runs.
   const Cli finish = sweep({"--no-plot", "--threads", "1", "--output", (dir / "budget").string(), file.string()});
   ASSERT_EQ(finish.rc, 0) << finish.err;
@@ -172,7 +173,8 @@ TEST(SweepPieces, AFolderOfKeptResultsRunsOnlyWhatIsMissingOrChanged) {
   fs::remove_all(recorded / "cases");
   const Cli rerun = run(recorded, changed);
   ASSERT_EQ(rerun.rc, 0) << rerun.err;
-  for (const json& r : read_json(recorded / "table.json")["cases"]) {
+  const json rerun_table = read_json(recorded / "table.json");
+  for (const json& r : rerun_table["cases"]) {
     EXPECT_EQ(r["message"].get<std::string>().rfind("run again: its kept result was of another description", 0), 0u) << r;
     EXPECT_NE(r["message"].get<std::string>().find("/scene/footing/speed"), std::string::npos) << r;
   }
