@@ -24,4 +24,16 @@ if ! diff "$work/in_turn.rows" "$work/ranks.rows"; then
 fi
 rows=$(grep -c ',done,' "$work/ranks.rows" || true)
 [ "$rows" -eq 2 ] || { echo "FAIL: expected 2 cases done, found $rows"; cat "$work/ranks.rows"; exit 1; }
-echo "PASS: 2 cases on 2 ranks, the same table as in turn"
+
+# Under a budget too small for any case the ranks start none and exit 75; run again without it,
+# they run both to the same table.
+set +e
+"$mpiexec" -n 2 "$tool" --no-plot --budget 0.0001 --output "$work/budget" "$sweep" >"$work/budget.out" 2>&1
+rc=$?
+set -e
+[ "$rc" -eq 75 ] || { echo "FAIL: a budget too small for any case gave exit $rc, not 75"; cat "$work/budget.out"; exit 1; }
+grep -q "too small for any case" "$work/budget.out" || { echo "FAIL: no 'too small for any case'"; cat "$work/budget.out"; exit 1; }
+"$mpiexec" -n 2 "$tool" --quiet --no-plot --output "$work/budget" "$sweep" >/dev/null 2>&1
+strip "$work/budget/table.csv" >"$work/budget.rows"
+diff "$work/in_turn.rows" "$work/budget.rows" || { echo "FAIL: the table after the budget differs"; exit 1; }
+echo "PASS: 2 cases on 2 ranks, the same table as in turn, also after a budget too small for any case"

@@ -73,17 +73,24 @@ class MpiRanks : public CaseDistributor {
   }
 
   // Rank 0 runs cases in a thread of its own while this thread (the only one that calls MPI)
-  // answers the workers.
+  // answers the workers. A worker that asks while no case may start (the budget) waits for its
+  // answer as long as a case runs anywhere: that case's end measures the rate, and a refused case
+  // may fit then. Once nothing runs and nothing may start, every waiting worker is told so.
   void coordinate(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished,
                   const MayStart& may_start) {
     std::deque<std::size_t> queue(pending.begin(), pending.end());
-    // Drops the cases at the queue's front that may not start now (the budget): none of them
-    // would fit later either, as the time left only shrinks.
-    const auto next_startable = [&] {
-      while (!queue.empty() && !may_start(queue.front())) queue.pop_front();
-      return !queue.empty();
+    const auto take_startable = [&](int& next) {
+      for (auto it = queue.begin(); it != queue.end(); ++it)
+        if (may_start(*it)) {
+          next = static_cast<int>(*it);
+          queue.erase(it);
+          return true;
+        }
+      return false;
     };
     int remote_left = size_ - 1;  // workers not yet told that there is nothing left
+    int remote_busy = 0;          // workers running a case
+    std::deque<int> waiting;      // workers that asked and have no answer yet
     std::thread local;
     std::atomic<bool> local_done{false};
     std::size_t local_case = 0;
@@ -95,9 +102,9 @@ class MpiRanks : public CaseDistributor {
         finished(local_case, local_row);
         moved = true;
       }
-      if (!local.joinable() && next_startable()) {
-        local_case = queue.front();
-        queue.pop_front();
+      int next = -1;
+      if (!local.joinable() && take_startable(next)) {
+        local_case = static_cast<std::size_t>(next);
         local_done = false;
         local = std::thread([&, i = local_case] {
           local_row = run_one(i);
@@ -105,28 +112,40 @@ class MpiRanks : public CaseDistributor {
         });
         moved = true;
       }
-      int waiting = 0;
+      int asking = 0;
       MPI_Status status;
-      MPI_Iprobe(MPI_ANY_SOURCE, tag_ready, MPI_COMM_WORLD, &waiting, &status);
-      if (waiting) {
+      MPI_Iprobe(MPI_ANY_SOURCE, tag_ready, MPI_COMM_WORLD, &asking, &status);
+      if (asking) {
         int length = 0;
         MPI_Get_count(&status, MPI_CHAR, &length);
         std::string report(static_cast<std::size_t>(length), '\0');
         MPI_Recv(report.data(), length, MPI_CHAR, status.MPI_SOURCE, tag_ready, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         const std::size_t newline = report.find('\n');
-        if (newline != std::string::npos)
+        if (newline != std::string::npos) {
           finished(std::stoul(report.substr(0, newline)), report.substr(newline + 1));
-        int next = -1;
-        if (next_startable()) {
-          next = static_cast<int>(queue.front());
-          queue.pop_front();
+          --remote_busy;
+        }
+        waiting.push_back(status.MPI_SOURCE);
+        moved = true;
+      }
+      while (!waiting.empty()) {
+        int assigned = -1;
+        const bool runs_elsewhere = local.joinable() || remote_busy > 0;
+        if (!take_startable(assigned) && runs_elsewhere && !queue.empty()) break;  // wait for a case to end
+        MPI_Send(&assigned, 1, MPI_INT, waiting.front(), tag_assign, MPI_COMM_WORLD);
+        waiting.pop_front();
+        if (assigned >= 0) {
+          ++remote_busy;
         } else {
           --remote_left;
         }
-        MPI_Send(&next, 1, MPI_INT, status.MPI_SOURCE, tag_assign, MPI_COMM_WORLD);
         moved = true;
       }
-      if (queue.empty() && !local.joinable() && remote_left == 0) return;
+      if (!local.joinable() && remote_left == 0) {
+        if (!take_startable(next)) return;
+        queue.push_front(static_cast<std::size_t>(next));  // a case's end made it fit: run it here
+        continue;
+      }
       if (!moved) nap();
     }
   }

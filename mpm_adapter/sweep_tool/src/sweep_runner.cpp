@@ -33,8 +33,20 @@ using nlohmann::ordered_json;
 
 void InTurn::distribute(const std::vector<std::size_t>& pending, const RunOne& run_one, const Finished& finished,
                         const MayStart& may_start) {
-  for (std::size_t i : pending)
-    if (may_start(i)) finished(i, run_one(i));
+  // A case refused now may fit once a finished case has measured the rate: after each case the
+  // first that may start goes next, until none may.
+  std::vector<std::size_t> left = pending;
+  for (bool ran = true; ran && !left.empty();) {
+    ran = false;
+    for (auto it = left.begin(); it != left.end(); ++it) {
+      if (!may_start(*it)) continue;
+      const std::size_t i = *it;
+      left.erase(it);
+      finished(i, run_one(i));
+      ran = true;
+      break;
+    }
+  }
 }
 
 namespace {
