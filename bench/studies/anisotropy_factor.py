@@ -81,7 +81,7 @@ def percentile(v, p):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--sweep", default=os.path.join(ROOT, "data/sweeps/recorded/reference_study"))
+    ap.add_argument("--sweep", default=os.path.join(ROOT, "data/sweeps/recorded/reference_study_local_0.09m"))
     ap.add_argument("--description", default=os.path.join(ROOT, "data/sweeps/reference_study.json"))
     ap.add_argument("--out", default=os.path.join(ROOT, "bench/results/anisotropy_factor"))
     args = ap.parse_args()

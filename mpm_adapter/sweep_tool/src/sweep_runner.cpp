@@ -347,12 +347,17 @@ int replot_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, std::ostrea
     err << "acst_sweep: " << e.what() << "\n";
     return common::exit_bad_input;
   }
-  for (const std::string& w : draw(sweep, rows, opt)) err << "acst_sweep: warning: " << w << "\n";
+  // A folder with rows alone has no load records to draw from: its figures are kept as they are.
+  SweepRunOptions drawing = opt;
+  if (legacy > 0) drawing.plot = false;
+  for (const std::string& w : draw(sweep, rows, drawing)) err << "acst_sweep: warning: " << w << "\n";
   std::size_t done = 0;
   for (const ordered_json& r : rows) done += status_of(r) == CaseStatus::done;
   out << sweep.name << ": table, figures and report drawn again from " << opt.output_dir << " (" << done << " of "
       << sweep.cases.size() << " cases done";
-  if (legacy > 0) out << "; " << legacy << " rows from its table.json alone, kept by an acst_sweep before case records were";
+  if (legacy > 0)
+    out << "; " << legacy << " rows from its table.json alone, kept by an acst_sweep before case records were: its "
+        << "figures are left as they are";
   out << ")\n";
   return common::exit_done;
 }

@@ -169,6 +169,18 @@ TEST(SweepPieces, AFolderOfKeptResultsRunsOnlyWhatIsMissingOrChanged) {
   EXPECT_TRUE(fs::exists(recorded / "cases" / "bedding_90"));
   EXPECT_EQ(comparable_rows(recorded), comparable_rows(dir / "whole"));
 
+  // A folder recorded before kept results held records (its rows in table.json alone): --replot
+  // keeps those rows and leaves its figures as they are, having no load record to draw them from.
+  const fs::path legacy = dir / "legacy";
+  fs::create_directories(legacy / "figures");
+  for (const char* f : {"table.json", "sweep.json"}) fs::copy_file(dir / "whole" / f, legacy / f);
+  write(legacy / "figures" / "bedding.png", "a figure drawn when the cases were there");
+  const Cli old = sweep({"--quiet", "--replot", "--output", legacy.string(), file.string()});
+  ASSERT_EQ(old.rc, 0) << old.err;
+  EXPECT_NE(old.out.find("2 rows from its table.json alone"), std::string::npos) << old.out;
+  EXPECT_EQ(comparable_rows(legacy), comparable_rows(dir / "whole"));
+  EXPECT_EQ(text_of(legacy / "figures" / "bedding.png"), "a figure drawn when the cases were there");
+
   const fs::path changed = write(dir / "changed.json", two_beddings(R"(, "set": {"/footing/speed": 0.04})"));
   fs::remove_all(recorded / "cases");
   const Cli rerun = run(recorded, changed);
