@@ -44,9 +44,9 @@ struct CaseTimeEstimate {
   std::size_t measured_on = 0;           // cases measured (0: assumed)
   double seconds(double work, int threads, double fraction_left = 1.0) const;
 };
-// 0.5 M particle-steps a second a thread: half the converged footing's measured rate on a slow
-// core (docs/sweeps.md), so that the first case's estimate errs long.
-inline constexpr double assumed_particle_steps_per_s_thread = 0.5e6;
+// 0.75 M particle-steps a second a thread: three quarters of the converged footing's measured rate
+// on a slow core (docs/sweeps.md), so that the first case's estimate errs long.
+inline constexpr double assumed_particle_steps_per_s_thread = 0.75e6;
 inline constexpr double estimate_margin = 1.25;
 
 // `assumed_rate`: particle-steps a second a thread before any case has run whole (0: the one above).
