@@ -23,11 +23,16 @@ void splines_on_interval(const double* t, int k, double x, double out[3]) {
 // the end node at its centre, `beyond` more of b and one to close the last node's support.
 std::vector<double> graded_side(double D, int beyond, const Grading& g, const char* which) {
   const double r = g.growth, fine = g.fine;
+  // Each growing cell is wider than a fine one, so no more of them than D / fine fit: a ratio just
+  // above 1 (1.0000001 would grow for 1.4e7 cells) costs work in the side's length, not in the
+  // ratio's closeness to 1. The sums are added in the same order as one by one.
+  const double room = std::floor(D / fine);
   int K = 0;
-  while (fine * std::pow(r, K + 1) <= g.largest * (1.0 + 1e-12)) ++K;
+  while (K < room && fine * std::pow(r, K + 1) <= g.largest * (1.0 + 1e-12)) ++K;
+  std::vector<double> grown_to(static_cast<std::size_t>(K) + 1, 0.0);  // the first k growing cells' sum
+  for (int k = 1; k <= K; ++k) grown_to[k] = grown_to[k - 1] + fine * std::pow(r, k);
   for (; K >= 0; --K) {
-    double grown = 0.0;
-    for (int k = 1; k <= K; ++k) grown += fine * std::pow(r, k);
+    const double grown = grown_to[K];
     const double c = fine * std::pow(r, K), rest = D - grown;
     if (rest <= 0.0) continue;
     const double P = std::round(rest / c + 0.5);
