@@ -57,10 +57,12 @@ void NonlocalAverage::find_neighbours(const Particles& P, int threads) {
   y_found_ = P.y;
   ++builds_;
   if (!(x_min <= x_max)) return;
-  const auto bins_over = [&](double extent) { return static_cast<long long>(extent / radius) + 1; };
-  const long long bx = bins_over(x_max - x_min), by = bins_over(y_max - y_min);
-  if (static_cast<double>(bx) * static_cast<double>(by) > 4.0 * static_cast<double>(n) + 16.0)
-    throw std::length_error("the soil's extent is too large for the nonlocal bins at this internal length");
+  // Counted in double before any becomes an integer: a vanishing length must not overflow them.
+  const double bins_x = std::floor((x_max - x_min) / radius) + 1.0, bins_y = std::floor((y_max - y_min) / radius) + 1.0;
+  if (!(bins_x * bins_y <= 4.0 * static_cast<double>(n) + 16.0))
+    throw std::length_error("the internal length (" + std::to_string(length_) +
+                            " m) is too short for the soil's extent: the nonlocal bins would outnumber the particles");
+  const long long bx = static_cast<long long>(bins_x), by = static_cast<long long>(bins_y);
   std::vector<std::size_t> bin_first(static_cast<std::size_t>(bx * by) + 1, 0), in_bin;
   const auto bin_of = [&](double x, double y, long long& i, long long& j) {
     i = static_cast<long long>(std::floor((x - x_min) / radius));

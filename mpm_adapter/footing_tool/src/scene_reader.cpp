@@ -141,7 +141,11 @@ double length_given_or_from_grains(const json& j, const std::string& p, const ch
       j.contains("d50_mm") ? f::number(j["d50_mm"], p + "/d50_mm", {0.0, 100.0, true, false}, "mm") : toyoura_d50_mm;
   const double level =
       j.contains("acceleration_level") ? f::number(j["acceleration_level"], p + "/acceleration_level", {1.0, 1000.0}) : 1.0;
-  return from_grains(d50, level);
+  const double length = from_grains(d50, level);
+  if (!(length <= 100.0))  // the same cap as a given length's
+    f::fail(p, "the length derived from d50_mm " + f::shown(d50) + " and acceleration_level " + f::shown(level) + " is " +
+                   f::shown(length) + " m; allowed: at most 100 m (give " + key + " instead)");
+  return length;
 }
 
 Regularisation read_regularisation(const json& j, const std::string& p) {
@@ -171,6 +175,24 @@ Micropolar read_micropolar(const json& j, const std::string& p) {
   if (j.contains("modulus_ratio"))
     m.modulus_ratio = f::number(j["modulus_ratio"], p + "/modulus_ratio", {0.0, 1.0, true, false});
   return m;
+}
+
+// The averaging reaches 2.5 l: a length above 0 and under the particles' spacing (the cell over the particles
+// per cell) reaches no other particle, so the sand stays local, and far under it the averaging's
+// bins outnumber the particles (1e-300 m overflowed their count). Refused here, naming the key that
+// set the length, before anything is written; docs/mpm.md asks two cells per l.
+void require_length_reaches_neighbours(const Scene& s, const json& j) {
+  double spacing = 0.0;
+  for (const BodySpec& b : s.bodies) spacing = std::max(spacing, s.cell_size / b.particles_per_cell);
+  const double l = s.solver.regularisation.internal_length;
+  if (l == 0.0 || l >= spacing) return;  // 0: the local model
+  const bool given = j.contains("internal_length_m");
+  f::fail(given ? "/regularisation/internal_length_m" : "/regularisation",
+          (given ? f::shown(l) + " m" : "the length derived from the grains, " + f::shown(l) + " m,") +
+              " is shorter than the particles' spacing (" + f::shown(spacing) +
+              " m: /grid/cell_size over particles_per_cell): the average would reach no other particle; allowed: at least " +
+              f::shown(spacing) + " m (docs/mpm.md, \"Nonlocal regularisation\": two cells per length)" +
+              (given ? "" : "; set acceleration_level or internal_length_m"));
 }
 
 FootingSpec read_footing(const json& j, const std::string& p) {
@@ -393,6 +415,7 @@ Scene scene_from_document(const json& j, const std::string& file) {
   if (j.contains("solver")) s.solver = read_solver(j["solver"], "/solver");
   if (j.contains("regularisation")) s.solver.regularisation = read_regularisation(j["regularisation"], "/regularisation");
   if (j.contains("micropolar")) s.solver.micropolar = read_micropolar(j["micropolar"], "/micropolar");
+  if (j.contains("regularisation")) require_length_reaches_neighbours(s, j["regularisation"]);
   s.solver.gravity = s.gravity;
   if (follow_footing && !s.footing) f::fail("/grid/follow_footing", "needs a /footing (the rows follow its base)");
   s.solver.grid_follows_footing = follow_footing;

@@ -9,6 +9,7 @@
 #include "acst_common/parallel_for.hpp"
 #include "acst_footing_tool/records.hpp"
 #include "acst_mpm/footing.hpp"
+#include "acst_mpm/nonlocal_average.hpp"
 
 namespace acst::mpm {
 namespace f = acst::common::fields;
@@ -124,6 +125,16 @@ SceneSize scene_size(const Scene& scene, double steps) {
   }
   size.bytes_per_node = bytes_per_node(common::thread_count(s.solver.threads));
   size.bytes_per_particle = bytes_per_particle(state_size, s.footing.has_value());
+  // The regularisation's neighbour lists: a 4-byte entry for each particle within its reach
+  // (2.5 l and a skin of l/4; twice that near a half domain's mirror), at most every particle,
+  // and 5 doubles of each particle's own (the positions found, the value, the volume, the row).
+  if (const double l = s.solver.regularisation.internal_length; l > 0.0) {
+    double spacing = s.cell_size;
+    for (const BodySpec& b : s.bodies) spacing = std::min(spacing, s.cell_size / b.particles_per_cell);
+    const double reach = (nonlocal_reach + 0.25) * l;
+    const double within = std::min(size.particles, 2.0 * 3.14159265358979 * reach * reach / (spacing * spacing) + 1.0);
+    size.bytes_per_particle += 4.0 * within + 8.0 * 5;
+  }
   size.record_rows = steps / s.solver.xpic_every + (s.output.every_step_csv ? steps : 0.0);
   // Each followed particle adds a history row (kept, and its CSV line of 27 numbers) per record row.
   size.bytes_per_row = bytes_per_record_row +

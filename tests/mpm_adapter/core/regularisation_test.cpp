@@ -11,6 +11,7 @@
 
 #include "acst_driver/runner.hpp"
 #include "acst_driver/scene.hpp"
+#include "acst_footing_tool/scene_size.hpp"
 #include "acst_mpm/nonlocal_average.hpp"
 #include "mpm_scenes.hpp"
 
@@ -109,3 +110,38 @@ TEST(Regularisation, AHomogeneouslyCompressedBlockGivesTheLocalResult) {
 }
 
 }  // namespace mpm_regularisation_test
+
+// A length the averaging cannot use is refused by the reader with its JSON path, the value and the
+// allowed range, before anything is written: the documented defaults at 1 g (2.8 mm on 0.1 m
+// cells) used to fail at the first step blaming the soil's extent, 1e-300 m overflowed the bins'
+// count (undefined behaviour), and a derived length had no cap.
+TEST(Regularisation, ALengthTheAveragingCannotUseIsRefusedWithItsPath) {
+  const auto scene = mpm_test::small_sand_footing;
+  const std::string defaults = mpm_test::parse_error(scene(R"(, "regularisation": {})"));
+  EXPECT_NE(defaults.find("/regularisation: the length derived from the grains, 0.00283"), std::string::npos) << defaults;
+  EXPECT_NE(defaults.find("allowed: at least 0.1 m"), std::string::npos) << defaults;
+  for (const char* tiny : {"1e-300", "5e-324", "0.05"}) {
+    const std::string m = mpm_test::parse_error(scene(std::string(R"(, "regularisation": {"internal_length_m": )") + tiny + "}"));
+    EXPECT_NE(m.find("/regularisation/internal_length_m"), std::string::npos) << m;
+    EXPECT_NE(m.find("shorter than the particles' spacing (0.1 m"), std::string::npos) << m;
+  }
+  const std::string huge = mpm_test::parse_error(scene(R"(, "regularisation": {"d50_mm": 100, "acceleration_level": 1000})"));
+  EXPECT_NE(huge.find("/regularisation: the length derived from d50_mm 100 and acceleration_level 1000"), std::string::npos)
+      << huge;
+  EXPECT_EQ(mpm_test::parse_error(scene(R"(, "regularisation": {"internal_length_m": 0.1})")), "accepted");
+  EXPECT_EQ(mpm_test::parse_error(scene(R"(, "regularisation": {"acceleration_level": 40})")), "accepted");  // 0.113 m
+}
+
+// The neighbour lists count in the scene's memory estimate: a length that reaches every particle
+// costs 4 bytes a pair, which the estimate left out (20 MB against 1.3 GB on 12 800 particles).
+TEST(Regularisation, TheNeighbourListsCountInTheMemoryEstimate) {
+  const auto scene = [](const std::string& regularisation) {
+    return mpm_test::delivered_sand_scene(R"("bodies": [{"material": "sand", "x_range": [0, 16], "y_range": [0, 8],
+        "density": 1600, "relative_density_pct": 85, "bedding_angle_deg": 0}], "stop": {"steps": 10})" + regularisation);
+  };
+  const acst::mpm::SceneSize local = acst::mpm::scene_size(acst::mpm::parse_scene(scene("")), 0.0);
+  const acst::mpm::SceneSize wide =
+      acst::mpm::scene_size(acst::mpm::parse_scene(scene(R"(, "regularisation": {"internal_length_m": 100})")), 0.0);
+  ASSERT_EQ(wide.particles, 12800.0);
+  EXPECT_GE(wide.bytes() - local.bytes(), 4.0 * wide.particles * wide.particles);
+}
