@@ -191,13 +191,21 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
       const auto sigma3 = per_row(x.sigma3_column, x.sigma3_kPa), e0 = per_row(x.void_ratio_column, x.void_ratio);
       const int n = run_increments(x.peak_search_strain_pct, x.strain_increment_pct, x);
       for (std::size_t i = 0; i < measured.size(); ++i) {
-        bool selected = !std::isnan(b[i]) && !std::isnan(omega[i]) && !std::isnan(measured[i]) && !std::isnan(sigma3[i]) &&
-                        !std::isnan(e0[i]);
+        bool wanted = true;  // by the experiment's row filter
         for (const auto& [column, values] : x.row_filter) {
           const double v = lab.column(column)[i];
-          selected = selected && std::find(values.begin(), values.end(), v) != values.end();
+          wanted = wanted && std::find(values.begin(), values.end(), v) != values.end();
         }
-        if (!selected) continue;
+        if (!wanted) continue;
+        // An empty cell leaves its row out (the table has no value there); text in a column the
+        // experiment reads is a typing slip (4O.3, x) and used to drop its row silently.
+        for (const std::string* column : {&x.phi_column, &x.b_column, &x.bedding_column, &x.sigma3_column, &x.void_ratio_column})
+          if (const std::string text = column->empty() ? "" : lab.text_at(*column, i); !text.empty())
+            throw common::InputError(x.path + "/data: '" + x.data_file + "':" + std::to_string(lab.lines[i]) + ": column " +
+                                     *column + ": '" + text + "' is not a number (a cell this experiment reads must be a " +
+                                     "number, or empty to leave its row out)");
+        if (std::isnan(b[i]) || std::isnan(omega[i]) || std::isnan(measured[i]) || std::isnan(sigma3[i]) || std::isnan(e0[i]))
+          continue;
         if (!(b[i] >= 0.0 && b[i] <= 1.0 && sigma3[i] > 0.0 && void_ratio_admissible(e0[i])))
           throw common::InputError(x.path + "/data: row " + std::to_string(i + 1) + " of '" + x.data_file + "' has b " +
                                    common::fields::shown(b[i]) + ", sigma3 " + common::fields::shown(sigma3[i]) +

@@ -43,6 +43,15 @@ std::vector<double> LabCurve::column(const std::string& name) const {
   return {};
 }
 
+std::string LabCurve::text_at(const std::string& name, std::size_t row) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) {
+      const auto it = text_cells.find({i, row});
+      return it == text_cells.end() ? std::string() : it->second;
+    }
+  return {};
+}
+
 double LabCurve::number(const std::string& key) const {
   const auto it = meta.find(key);
   if (it == meta.end()) return std::numeric_limits<double>::quiet_NaN();
@@ -93,8 +102,10 @@ LabCurve parse_commented_csv(const std::string& text, const std::string& path, b
       if (!cells[i].empty()) {
         char* end = nullptr;
         v = std::strtod(cells[i].c_str(), &end);
-        if ((*end != '\0' || !std::isfinite(v)) && text_as_nan)
+        if ((*end != '\0' || !std::isfinite(v)) && text_as_nan) {
           v = std::numeric_limits<double>::quiet_NaN();
+          c.text_cells[{i, c.values[i].size()}] = cells[i];
+        }
         else if (*end != '\0' || !std::isfinite(v))
           throw std::runtime_error(where() + "column " + c.columns[i] + ": '" + cells[i] + "' is not a number");
       }

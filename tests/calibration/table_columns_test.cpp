@@ -160,3 +160,33 @@ TEST(BundledDescriptions, TableRowsAndFolds) {
 
 }  // namespace
 }  // namespace acst::calibration::calibration_table_columns_test
+
+namespace acst::calibration::calibration_table_columns_test {
+
+// A cell of text in a column the experiment reads (4O.3 with a letter O, x, nan, inf) is refused
+// with the file, its line and the column, where the row used to be dropped silently; an empty
+// cell still leaves its row out, and text in a column the experiment does not read is no matter.
+TEST(TableColumns, TextInAColumnTheExperimentReadsIsRefusedWithItsLine) {
+  const fs::path dir = test::scratch_folder("table_text");
+  const auto problem_with = [&](const std::string& row) {
+    const fs::path file = dir / "peaks.csv";
+    std::ofstream(file) << "# kind: TC\n# bedding_angle_deg: 0\ntest,s3_kPa,e_0p3,phi_uncorrected,note\n"
+                           "1,50,0.70,40,fine\n" << row << "\n";
+    return Problem(parse_fit_spec(description(file).dump(), base_dir, "t"));
+  };
+  for (const char* bad : {"2,50,0.85,4O.3,x", "2,50,x,36,x", "2,nan,0.85,36,x", "2,50,0.85,inf,x"}) {
+    try {
+      problem_with(bad);
+      ADD_FAILURE() << bad << ": accepted";
+    } catch (const common::InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("peaks.csv':5: column "), std::string::npos) << m;
+      EXPECT_NE(m.find("is not a number"), std::string::npos) << m;
+    }
+  }
+  EXPECT_EQ(problem_with("2,50,0.85,,a note").test_runs().size(), 1u);  // empty: the row left out
+  EXPECT_EQ(problem_with("2,50,0.85,36,a note").test_runs().size(), 2u);
+  fs::remove_all(dir);
+}
+
+}  // namespace acst::calibration::calibration_table_columns_test

@@ -14,12 +14,18 @@ struct LabCurve {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;  // values[column][row], NaN where the cell is empty
   std::vector<int> lines;                   // lines[row]: the row's line in the file, for messages
+  // Read with text_as_nan: the cells that held text (not a number, not empty), as
+  // (column, row) -> the text, so that a user of a column can tell text from an empty cell.
+  std::map<std::pair<std::size_t, std::size_t>, std::string> text_cells;
 
   // The column's values (NaN where empty); an empty vector if the file has no such column.
   std::vector<double> column(const std::string& name) const;
   // Header value as a number, or NaN when absent or not a number.
   double number(const std::string& key) const;
   std::string text(const std::string& key) const;  // "" when absent
+  // The text a cell of `column` held at `row` where it was no number ("" for a number, an empty
+  // cell, or no such column).
+  std::string text_at(const std::string& column, std::size_t row) const;
 };
 
 // Throws std::runtime_error("path:line: what") on unreadable or malformed files, and on rows not
