@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <new>
@@ -63,6 +64,19 @@ std::string offset_problem(const acst_model& model, const double* offset) {
              ") is not finite or not smaller than " + std::to_string(acst::void_ratio_limit) + " in size";
   return "";
 }
+
+// Whether n points `stride` doubles apart, each `width` doubles wide, fit in an array a host can
+// hold (its size in bytes within ptrdiff_t). A stride checked only from below let one that wraps
+// size_t through (a negative stride passed as size_t): the batch wrote before the caller's array.
+bool span_fits(size_t n, size_t stride, size_t width) {
+  if (n == 0) return true;
+  const size_t most = static_cast<size_t>(PTRDIFF_MAX) / sizeof(double);
+  return width <= most && n - 1 <= (most - width) / std::max<size_t>(stride, 1);
+}
+
+#define ACST_SPAN_RULE                                                                                        \
+  "n points at these strides reach past the largest array a host can hold (a stride that wraps size_t: a " \
+  "negative stride passed as size_t?)"
 
 }  // namespace
 
@@ -166,6 +180,8 @@ acst_status acst_update_batch(double* stress, size_t stress_stride, double* stat
                "acst_update_batch: a required pointer is NULL");
   ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv && dstrain_stride >= 6),
                "acst_update_batch: strides must be at least 6 (stress, strain) and acst_state_size (state)");
+  ACST_REQUIRE(span_fits(n, stress_stride, 6) && span_fits(n, statev_stride, nstatv) && span_fits(n, dstrain_stride, 6),
+               "acst_update_batch: " ACST_SPAN_RULE);
   ACST_GUARD({
     acst_status first = ok_status();
     acst::integration::Report rep;
@@ -283,6 +299,10 @@ acst_status acst_update_rotated_batch_nonlocal(double* stress, size_t stress_str
                "acst_update_rotated_batch: a required pointer is NULL");
   ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv),
                "acst_update_rotated_batch: strides must be at least 6 (stress) and acst_state_size (state)");
+  const size_t per_point_offsets = static_cast<size_t>(model->kind->nonlocal_size());
+  ACST_REQUIRE(span_fits(n, stress_stride, 6) && span_fits(n, statev_stride, nstatv) && span_fits(n, 9, 9) &&
+                   span_fits(n, per_point_offsets, per_point_offsets) && span_fits(n, sizeof(acst_counters), sizeof(acst_counters)),
+               "acst_update_rotated_batch: " ACST_SPAN_RULE);
   ACST_GUARD({
     const size_t per_point = static_cast<size_t>(model->kind->nonlocal_size());
     // In blocks of points with a proper rotation and usable offsets, updated in place together

@@ -146,3 +146,44 @@ TEST(AbiCorners, ATensileStateGetsTheAnswerOfTheTwoCallsFromUpdateRotated) {
 }
 
 }  // namespace c_abi_corners_test
+
+namespace c_abi_corners_test {
+
+// A stride whose product with the point count wraps size_t (a host's negative stride passed as
+// size_t) was checked only from below: the batch wrote before the caller's array and answered OK.
+// Every batch entry point refuses it with ACST_INVALID_INPUT and a message, writing nothing.
+TEST(AbiCorners, AStrideThatWrapsSizeTIsRefusedAndNothingIsWritten) {
+  const AbiModel m(calibrated_acst());
+  Point p[2] = {Point(m), Point(m)};
+  const Point before[2] = {p[0], p[1]};
+  const double dstrain[12] = {-1e-4, 0, 0, 0, 0, 0, -1e-4, 0, 0, 0, 0, 0};
+  const double turns[18] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const double offsets[2] = {0, 0};
+  const size_t backward = static_cast<size_t>(-static_cast<std::ptrdiff_t>(sizeof(Point) / sizeof(double)));
+  const size_t state_stride = sizeof(Point) / sizeof(double);
+  int codes[2] = {-1, -1};
+  const auto refused = [&](const acst_status& st, const char* which) {
+    EXPECT_EQ(st.code, ACST_INVALID_INPUT) << which;
+    EXPECT_NE(std::string(st.message).find("wraps size_t"), std::string::npos) << which << ": " << st.message;
+    expect_untouched(p[0], before[0], which);
+    expect_untouched(p[1], before[1], which);
+    EXPECT_EQ(codes[0], -1) << which;
+  };
+  // The second point addressed backwards from the first: before the array.
+  refused(acst_update_batch(p[1].stress, backward, p[1].statev, state_stride, codes, nullptr, m.get(), 2, dstrain, 6),
+          "acst_update_batch, stress");
+  refused(acst_update_batch(p[0].stress, state_stride, p[0].statev, SIZE_MAX, codes, nullptr, m.get(), 2, dstrain, 6),
+          "acst_update_batch, state");
+  refused(acst_update_batch(p[0].stress, state_stride, p[0].statev, state_stride, codes, nullptr, m.get(), 2, dstrain, SIZE_MAX / 2),
+          "acst_update_batch, strain");
+  refused(acst_update_rotated_batch(p[1].stress, backward, p[1].statev, state_stride, codes, nullptr, m.get(), 2, turns, dstrain),
+          "acst_update_rotated_batch");
+  refused(acst_update_rotated_batch_nonlocal(p[0].stress, state_stride, p[0].statev, SIZE_MAX / 3, codes, nullptr, m.get(), 2,
+                                             turns, dstrain, offsets),
+          "acst_update_rotated_batch_nonlocal");
+  // Strides a host uses still work: the two points apart by one Point.
+  EXPECT_EQ(acst_update_batch(p[0].stress, state_stride, p[0].statev, state_stride, codes, nullptr, m.get(), 2, dstrain, 6).code,
+            ACST_OK);
+}
+
+}  // namespace c_abi_corners_test
