@@ -1,4 +1,5 @@
 #include "acst_footing_tool/checkpoint.hpp"
+#include "acst_mpm/material_frame.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -126,6 +127,9 @@ bool all_finite(const std::vector<double>& v) {
 // the next step.
 bool step_in_range(long long step) { return step >= 0 && step <= max_checkpoint_steps; }
 
+// A strain no soil reaches (1000 = 100 000 %): past it a followed particle's frame is not a run's.
+constexpr double max_frame_strain = 1e3;
+
 bool track_finite(const TrackRecord& t) {
   bool finite = std::isfinite(t.time) && std::isfinite(t.S_over_B) && std::isfinite(t.x) && std::isfinite(t.y) &&
                 std::isfinite(t.rotation_rad) && std::isfinite(t.void_ratio) && std::isfinite(t.H) &&
@@ -157,6 +161,17 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
       if (!all_finite(v)) r.refuse("holds a non-finite particle value");
   });
   if (P.tracked != sim.particles().tracked) r.refuse("follows other particles than the scene's particle_histories");
+  // A followed particle's frame: the cosine and sine of a rotation (a unit pair, to the rounding
+  // of many turns) and its strain (a 1e300 under a good checksum gave non-finite histories).
+  if (P.track_frame.size() != static_cast<std::size_t>(material_frame_size) * P.tracked.size())
+    r.refuse("holds particle-history frames of the wrong size");
+  for (std::size_t k = 0; k < P.tracked.size(); ++k) {
+    const double* frame = &P.track_frame[static_cast<std::size_t>(material_frame_size) * k];
+    const bool turn = std::fabs(frame[0] * frame[0] + frame[1] * frame[1] - 1.0) <= 1e-6;
+    const bool strain = std::fabs(frame[2]) <= max_frame_strain && std::fabs(frame[3]) <= max_frame_strain &&
+                        std::fabs(frame[4]) <= max_frame_strain;
+    if (!turn || !strain) r.refuse("holds an impossible particle-history frame (followed particle " + std::to_string(k) + ")");
+  }
   const Grid& g = sim.grid();
   const double x_lo = g.node_x(0), y_lo = g.node_y(0), x_max = g.node_x(g.nx - 1), y_max = g.node_y(g.ny - 1);
   for (std::size_t p = 0; p < P.n; ++p) {
