@@ -206,6 +206,10 @@ Problem::Problem(const FitSpec& spec) : spec_(spec) {
                                      "number, or empty to leave its row out)");
         if (std::isnan(b[i]) || std::isnan(omega[i]) || std::isnan(measured[i]) || std::isnan(sigma3[i]) || std::isnan(e0[i]))
           continue;
+        if (!(measured[i] > 0.0 && measured[i] < 90.0))  // -10, 95 and 1e308 deg were taken as measured
+          throw common::InputError(x.path + "/data: '" + x.data_file + "':" + std::to_string(lab.lines[i]) + ": column " +
+                                   x.phi_column + ": a peak friction angle of " + common::fields::shown(measured[i]) +
+                                   " deg (allowed: between 0 and 90 deg)");
         if (!(b[i] >= 0.0 && b[i] <= 1.0 && sigma3[i] > 0.0 && void_ratio_admissible(e0[i])))
           throw common::InputError(x.path + "/data: row " + std::to_string(i + 1) + " of '" + x.data_file + "' has b " +
                                    common::fields::shown(b[i]) + ", sigma3 " + common::fields::shown(sigma3[i]) +

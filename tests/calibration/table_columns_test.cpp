@@ -184,6 +184,14 @@ TEST(TableColumns, TextInAColumnTheExperimentReadsIsRefusedWithItsLine) {
       EXPECT_NE(m.find("is not a number"), std::string::npos) << m;
     }
   }
+  for (const char* angle : {"-10", "95", "1e308", "0"}) {
+    try {
+      problem_with(std::string("2,50,0.85,") + angle + ",x");
+      ADD_FAILURE() << angle << ": accepted";
+    } catch (const common::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("allowed: between 0 and 90 deg"), std::string::npos) << e.what();
+    }
+  }
   EXPECT_EQ(problem_with("2,50,0.85,,a note").test_runs().size(), 1u);  // empty: the row left out
   EXPECT_EQ(problem_with("2,50,0.85,36,a note").test_runs().size(), 2u);
   fs::remove_all(dir);

@@ -261,6 +261,10 @@ std::vector<PanelFigure> read_panels(const json& a, const std::string& p, const 
     if (k == kinds.end()) f::fail(q + "/kind", "'" + kind + "': expected load, map, histories or load_path");
     fig.kind = k->second;
     if (!e["cases"].is_array() || e["cases"].empty()) f::fail(q + "/cases", "expected a non-empty array of case names");
+    // One panel (or curve) a case: 300 drew nothing, with only gnuplot's warning.
+    if (e["cases"].size() > max_panel_cases)
+      f::fail(q + "/cases", std::to_string(e["cases"].size()) + " cases; allowed: at most " + std::to_string(max_panel_cases) +
+                                " a figure (split them over several figures)");
     for (std::size_t m = 0; m < e["cases"].size(); ++m) {
       const std::string c = f::string(e["cases"][m], q + "/cases/" + std::to_string(m));
       if (!case_names.count(c)) f::fail(q + "/cases/" + std::to_string(m), "'" + c + "' names no case of this sweep");

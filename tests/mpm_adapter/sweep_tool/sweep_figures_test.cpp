@@ -189,6 +189,9 @@ TEST(SweepFigures, BadPanelDescriptionsNameTheirJsonPath) {
             std::string::npos);
   EXPECT_NE(panels(R"([{"name": "f", "kind": "load", "cases": ["a"], "colour": 1}])").find("colour"), std::string::npos);
   EXPECT_EQ(panels(R"([{"name": "f", "kind": "histories", "column": "q_kPa", "cases": ["a"]}])"), "accepted");
+  std::string many = R"([{"name": "f", "kind": "load", "cases": ["a")";
+  for (int k = 0; k < 64; ++k) many += R"(, "a")";
+  EXPECT_NE(panels(many + "]}]").find("/gather/panels/0/cases: 65 cases; allowed: at most 64"), std::string::npos);
 }
 
 }  // namespace acst::test::sweep_figures_test

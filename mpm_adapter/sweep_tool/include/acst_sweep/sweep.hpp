@@ -39,6 +39,9 @@ struct KeepSpec {
 // tracked point (A, B, C) with one curve of a history column per case; `load_path`, H against V.
 enum class PanelKind { load, map, histories, load_path };
 
+// The cases one figure of gather/panels may draw: 64 panels (8 x 8) are still readable.
+inline constexpr std::size_t max_panel_cases = 64;
+
 struct PanelFigure {
   std::string name, title;  // figures/NAME.png; the title ("" : from what the cases share)
   PanelKind kind = PanelKind::load;
