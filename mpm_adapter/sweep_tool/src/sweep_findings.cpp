@@ -253,6 +253,11 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
     }
     case Expectation::greater: status = steps({{v[0], v[1]}}); break;
     case Expectation::ratio: {
+      if (v[1] == 0.0) {  // no ratio to judge: said, not read as infinity or NaN
+        r.numbers += "; no ratio: the second value is 0";
+        missing = true;
+        break;
+      }
       const double ratio = v[0] / v[1], off = std::fabs(ratio - c.value);
       const double u = band ? std::fabs(ratio) * width(v[0], v[1]) / std::max(std::fabs(v[0]), std::fabs(v[1])) : 0.0;
       status = status_of_interval(off + u <= c.within, off - u > c.within, off <= c.within, band != nullptr);

@@ -244,6 +244,18 @@ TEST(SweepFindings, SimilarAndDifferentHoldAtZeroAndForNegativeValues) {
   EXPECT_EQ(judged(0.0, 1.0, "similar", 0.99), "fails");
   EXPECT_EQ(judged(-1.0, 1.0, "similar", 2.0), "holds");  // across zero: 2 of the larger size 1
   EXPECT_EQ(judged(-1.0, 1.0, "similar", 1.9), "fails");
+  // A ratio over a zero is no ratio: open, said in the numbers, never infinity or NaN.
+  FindingCheck ratio;
+  ratio.expect = Expectation::ratio;
+  ratio.cases = {"x", "y"};
+  ratio.columns = {"v"};
+  ratio.value = 1.0;
+  ratio.within = 0.1;
+  const std::vector<ordered_json> zero = {{{"case", "x"}, {"status", "done"}, {"v", 0.0}}, {{"case", "y"}, {"status", "done"}, {"v", 0.0}}};
+  const CheckResult r = judge(ratio, zero);
+  EXPECT_EQ(r.status, CheckStatus::open);
+  EXPECT_NE(r.numbers.find("no ratio: the second value is 0"), std::string::npos) << r.numbers;
+  EXPECT_EQ(r.numbers.find("nan"), std::string::npos) << r.numbers;
 }
 
 }  // namespace acst::test::sweep_findings_test
