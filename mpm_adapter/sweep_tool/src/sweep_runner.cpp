@@ -246,7 +246,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
   double work_total = 0.0, work_ended = 0.0;  // the time left goes by the expected work, not the case count
   for (std::size_t i : plan.pending) work_total += plan.work[i];
   std::vector<bool> started(sweep.cases.size(), false);
-  std::string shortest_refused;  // what the budget said of the first case it did not start
+  std::string refused;  // what the budget said of the last case it did not start
   const auto may_start = [&](std::size_t i) -> bool {
     if (!budget.limited()) return started[i] = true;
     const CaseTimeEstimate estimate = estimate_from(plan.rows, plan.work, opt.assumed_rate);
@@ -256,8 +256,7 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
         plan.work[i], threads_of(c, opt),
         fraction_left(case_partial_folder(opt.output_dir, c.name), c.scene.stop.S_over_B.value_or(0.0)));
     if (need <= left) return started[i] = true;
-    if (shortest_refused.empty())
-      shortest_refused = c.name + " is expected to take " + common::duration_text(need) + " (" +
+    refused = c.name + " is expected to take " + common::duration_text(need) + " (" +
                          (estimate.measured_on > 0 ? "at the rate of the " + std::to_string(estimate.measured_on) +
                                                          " cases run whole in this folder"
                                                    : "at the assumed rate, no case having run whole in this folder yet") +
@@ -305,10 +304,13 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
     }
   }
   if (waiting > 0 && budget.limited()) {
-    out << sweep.name << ": the budget of " << common::fields::shown(budget.minutes()) << " min is spent: " << mine_done
-        << " of " << plan.mine << " cases done, " << waiting << " wait";
+    // Spent, or what is left too short for the next case (the estimate errs long by design).
+    out << sweep.name << ": the budget of " << common::fields::shown(budget.minutes()) << " min is "
+        << (budget.left_s() > 0.0 ? "too short for the cases that wait: " : "spent: ") << mine_done << " of " << plan.mine
+        << " cases done, " << waiting << " wait";
     if (interrupted > 0) out << " (" << interrupted << " checkpointed)";
-    if (interrupted == 0 && ended == 0 && !shortest_refused.empty()) out << "; too small for any case: " << shortest_refused;
+    if (waiting > interrupted && !refused.empty())
+      out << (ended == 0 && interrupted == 0 ? "; too small for any case: " : "; the next would not end in time: ") << refused;
     out << "; run the same command again to go on\n";
     return exit_budget_spent;
   }
