@@ -256,11 +256,11 @@ int run_sweep(const SweepSpec& sweep, const SweepRunOptions& opt, CaseDistributo
         plan.work[i], threads_of(c, opt),
         fraction_left(case_partial_folder(opt.output_dir, c.name), c.scene.stop.S_over_B.value_or(0.0)));
     if (need <= left) return started[i] = true;
-    refused = c.name + " is expected to take " + common::duration_text(need) + " (" +
-                         (estimate.measured_on > 0 ? "at the rate of the " + std::to_string(estimate.measured_on) +
-                                                         " cases run whole in this folder"
-                                                   : "at the assumed rate, no case having run whole in this folder yet") +
-                         "), " + common::duration_text(std::max(0.0, left)) + " of the budget left";
+    const std::string rate = estimate.measured_on > 0 ? "at the rate of the " + std::to_string(estimate.measured_on) +
+                                                            " cases run whole in this folder"
+                                                      : "at the assumed rate, no case having run whole in this folder yet";
+    refused = c.name + " is expected to take " + common::duration_text(need) + " (" + rate + "), " +
+              common::duration_text(std::max(0.0, left)) + " of the budget left";
     return false;
   };
   where.distribute(hand_out_order(plan, where.workers()), run_one, [&](std::size_t i, const std::string& row_text) {
