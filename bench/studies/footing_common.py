@@ -1,10 +1,12 @@
-"""Helpers shared by the footing studies in bench/ (command line, load curves, gnuplot quoting)."""
+"""Helpers shared by the studies in bench/studies/ (command line, the runs of acst_mpm cases, load
+curves, tables, gnuplot quoting)."""
 import argparse
 import csv
 import json
 import math
 import os
 import subprocess
+import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -20,6 +22,21 @@ def study_arguments(doc, out_name, only_help, switches=()):
     for flag, text in switches:
         ap.add_argument(flag, action="store_true", help=text)
     return ap.parse_args()
+
+
+def tool_arguments(doc, out_name, tool, options=()):
+    """The command line of a study that runs one of the project's tools: --out (default
+    results/OUT_NAME, made absolute, as the descriptions the study writes name files in it),
+    --tool (default build/TOOL, e.g. "calibration/acst_fit") and the study's `options`, (flag,
+    keyword arguments) pairs."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(ROOT, "results", out_name))
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", tool))
+    for flag, kw in options:
+        ap.add_argument(flag, **kw)
+    a = ap.parse_args()
+    a.out = os.path.abspath(a.out)
+    return a
 
 
 def footing_cases_arguments(doc, out, stop, extra=()):
@@ -78,6 +95,24 @@ def max_kinetic_ratio(path, from_S_over_B=0.02):
     return max(float(r["kinetic_over_work"]) for r in rows if float(r["S_over_B"]) >= from_S_over_B)
 
 
+def run_study_case(a, name, make_scene, done=("summary.json",), indent=2):
+    """Runs acst_mpm (a.tool, --threads a.threads) on case NAME into OUT/NAME (OUT = a.out), its
+    scene from make_scene() written to OUT/NAME.json first, unless --only (a.only, in the studies
+    that have it) leaves the case out or a file named in `done` exists in OUT/NAME; an exit other
+    than 0 is printed. Returns OUT/NAME: a study resumes by calling it for every case again."""
+    run_dir = os.path.join(a.out, name)
+    only = getattr(a, "only", "")
+    if (not only or name in only.split(",")) and not any(os.path.exists(os.path.join(run_dir, f)) for f in done):
+        path = os.path.join(a.out, name + ".json")
+        with open(path, "w") as f:
+            json.dump(make_scene(), f, indent=indent)
+        print(f"== {name}", flush=True)
+        run = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
+        if run.returncode != 0:
+            print(f"{name}: acst_mpm exit {run.returncode}", file=sys.stderr)
+    return run_dir
+
+
 def rms_difference_pct(curve, ref_curve, upto, q_scale):
     """RMS of curve - ref_curve over S/B 0.005..upto in steps of 0.005, in % of q_scale; points
     outside either record (a record averaged over long periods starts late) are left out."""
@@ -85,6 +120,16 @@ def rms_difference_pct(curve, ref_curve, upto, q_scale):
     d = [value_at(*curve, x) - value_at(*ref_curve, x) for x in grid]
     d = [v for v in d if not math.isnan(v)]
     return round(100.0 * math.sqrt(sum(v * v for v in d) / len(d)) / q_scale, 2)
+
+
+def add_rms_to_reference(table, reference_of, windows):
+    """Puts into each row of `table` (a dict with its "curve") rms_to_UPTO_pct for each S/B UPTO
+    in `windows`: the RMS difference from the row reference_of(row) over S/B 0.005-UPTO in % of
+    that row's largest load, q_max_kPa (rms_difference_pct); "" where reference_of gives None."""
+    for r in table:
+        ref = reference_of(r)
+        for upto in windows:
+            r[f"rms_to_{upto}_pct"] = "" if ref is None else rms_difference_pct(r["curve"], ref["curve"], upto, ref["q_max_kPa"])
 
 
 def write_table(path, fields, rows):

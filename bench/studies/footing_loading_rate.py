@@ -18,10 +18,9 @@ processes with --only (each process one case at a time).
 """
 import json
 import os
-import subprocess
 import sys
 
-from footing_common import (ROOT, max_kinetic_ratio, plot_beside_kimura, read_curve, rms_difference_pct,
+from footing_common import (ROOT, add_rms_to_reference, max_kinetic_ratio, plot_beside_kimura, read_curve, run_study_case,
                             scene_with_absolute_paths, study_arguments, value_at, write_table)
 
 SCENES = os.path.join(ROOT, "data", "scenes", "mpm")
@@ -67,16 +66,8 @@ def run_case(a, name, make_scene):
     """Runs case NAME (its scene from make_scene()) into OUT/NAME unless --only leaves it out or
     its summary.json exists; returns its row (loads at MARKS, first peak, largest load, kinetic
     ratio, steps, wall time, the record and its curve) or None if it has no summary."""
-    run_dir = os.path.join(a.out, name)
+    run_dir = run_study_case(a, name, make_scene)
     summary = os.path.join(run_dir, "summary.json")
-    if (not a.only or name in a.only.split(",")) and not os.path.exists(summary):
-        path = os.path.join(a.out, name + ".json")
-        with open(path, "w") as f:
-            json.dump(make_scene(), f, indent=2)
-        print(f"== {name}", flush=True)
-        done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
-        if done.returncode != 0:
-            print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
     if not os.path.exists(summary):
         return None
     with open(summary) as f:
@@ -111,14 +102,9 @@ def main():
               f"K/W {row['max_kinetic_ratio']:.1e}; {row['steps']} steps, {row['wall_s']:.0f} s")
     # Each curve against its test's run at the study's settings: RMS of the difference over S/B
     # 0.005-0.09 (before any curve's first peak) and over 0.005-0.2, over that run's largest load.
+    add_rms_to_reference(table, lambda r: next((x for x in table if x["case"] == case_name(r["test"], 1, 1, 0.5)), None),
+                         (0.09, 0.2))
     for r in table:
-        ref = next((x for x in table if x["case"] == case_name(r["test"], 1, 1, 0.5)), None)
-        for upto in (0.09, 0.2):
-            key = f"rms_to_{upto}_pct"
-            if ref is None:
-                r[key] = ""
-                continue
-            r[key] = rms_difference_pct(r["curve"], ref["curve"], upto, ref["q_max_kPa"])
         print(f"{r['case']:26s} RMS against {r['test']} at 0.045 m/s, cfl 0.5: {r['rms_to_0.09_pct']} % to S/B 0.09, "
               f"{r['rms_to_0.2_pct']} % to 0.2")
     fields = ["case", "test", "speed_m_per_s", "cfl"] + [f"q_at_{m}_kPa" for m in MARKS] + \

@@ -19,7 +19,7 @@ import json
 import os
 import sys
 
-from footing_common import ROOT, plot_beside_kimura, rms_difference_pct, study_arguments, write_table
+from footing_common import ROOT, add_rms_to_reference, plot_beside_kimura, study_arguments, write_table
 from footing_loading_rate import MARKS, STOP_S_OVER_B, TESTS, run_case, scene_for
 
 # case suffix -> (parameter file stem, values replaced in it, the suffix its RMS difference is taken from)
@@ -60,14 +60,7 @@ def main():
                   f"{', '.join('%.0f' % row[f'q_at_{m}_kPa'] for m in MARKS)} kPa; first peak {row['q_first_peak_kPa']} kPa "
                   f"at S/B {row['S_first_peak_over_B']}; largest {row['q_max_kPa']:.0f} kPa at S/B {row['S_at_max_over_B']}; "
                   f"{row['steps']} steps, {row['wall_s']:.0f} s")
-    for r in table:
-        ref = next((x for x in table if x["case"] == r["reference"]), None)
-        for upto in (0.09, 0.2):
-            key = f"rms_to_{upto}_pct"
-            if ref is None:
-                r[key] = ""
-                continue
-            r[key] = rms_difference_pct(r["curve"], ref["curve"], upto, ref["q_max_kPa"])
+    add_rms_to_reference(table, lambda r: next((x for x in table if x["case"] == r["reference"]), None), (0.09, 0.2))
     fields = ["case", "test", "set"] + [f"q_at_{m}_kPa" for m in MARKS] + \
              ["q_first_peak_kPa", "S_first_peak_over_B", "q_max_kPa", "S_at_max_over_B", "reference", "rms_to_0.09_pct", "rms_to_0.2_pct",
               "max_kinetic_ratio", "steps", "wall_s", "threads"]

@@ -22,7 +22,8 @@ import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted, max_kinetic_ratio, read_curve, scene_with_absolute_paths, study_arguments, value_at
+from footing_common import (ROOT, gp_quoted, max_kinetic_ratio, read_curve, run_study_case, scene_with_absolute_paths,
+                            study_arguments, value_at)
 
 BASE = os.path.join(ROOT, "data", "scenes", "mpm", "kimura_V85.6_alpha0.json")
 FACTORS = (2, 4, 8, 16, 32)
@@ -64,18 +65,11 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     table = []
     for name, half, speed, mass, ramp, stress_update in cases():
-        run_dir = os.path.join(a.out, name)
+        # a case that failed is not run again: its record up to the failure is what it gives
+        run_dir = run_study_case(a, name, lambda: scene_for(name, half, speed, mass, ramp, stress_update),
+                                 done=("summary.json", "load_settlement.failed.csv"))
         summary = os.path.join(run_dir, "summary.json")
         failed = os.path.join(run_dir, "load_settlement.failed.csv")
-        done_before = os.path.exists(summary) or os.path.exists(failed)
-        if (not a.only or name in a.only.split(",")) and not done_before:
-            path = os.path.join(a.out, name + ".json")
-            with open(path, "w") as f:
-                json.dump(scene_for(name, half, speed, mass, ramp, stress_update), f, indent=2)
-            print(f"== {name}", flush=True)
-            done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
-            if done.returncode != 0:
-                print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
         if os.path.exists(summary):
             with open(summary) as f:
                 s = json.load(f)

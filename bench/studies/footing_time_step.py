@@ -27,7 +27,7 @@ processes with --only.
 import os
 import sys
 
-from footing_common import plot_beside_kimura, rms_difference_pct, study_arguments, value_at, write_table
+from footing_common import add_rms_to_reference, plot_beside_kimura, study_arguments, value_at, write_table
 from footing_loading_rate import run_case
 from footing_loading_rate import scene_for as loading_rate_scene
 
@@ -72,10 +72,12 @@ def main():
         for m in MARKS:
             row[f"q_at_{m}_kPa"] = round(value_at(S, q, m), 1)
         table.append(row)
+    def reference_of(r):
+        return next((x for x in table if x["role"] == "reference" and x["test"] == r["test"]), None)
+
+    add_rms_to_reference(table, reference_of, RMS_WINDOWS)
     for r in table:
-        ref = next((x for x in table if x["role"] == "reference" and x["test"] == r["test"]), None)
-        for upto in RMS_WINDOWS:
-            r[f"rms_to_{upto}_pct"] = "" if ref is None else rms_difference_pct(r["curve"], ref["curve"], upto, ref["q_max_kPa"])
+        ref = reference_of(r)
         r["q_max_change_pct"] = "" if ref is None else round(100.0 * (r["q_max_kPa"] / ref["q_max_kPa"] - 1.0), 2)
         print(f"{r['case']:18s} {r['role']:12s} q_ult {r['q_max_kPa']:.1f} kPa at S/B {r['S_at_max_over_B']} "
               f"({r['q_max_change_pct']} %); RMS to S/B {', '.join(str(u) for u in RMS_WINDOWS)}: "

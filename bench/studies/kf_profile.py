@@ -16,7 +16,6 @@ the fit itself holds the closings, "The closing in the fit".)
 Writes OUT/profile.csv (k_f, the fit's objective and each fold's pooled RMS/scale as fitted, the
 fitted values, the Table 1 biases, the closings) and OUT/profile.png.
 """
-import argparse
 import csv
 import glob
 import json
@@ -27,7 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from calibration_runs import run_prediction  # noqa: E402
-from footing_common import gp_quoted  # noqa: E402
+from footing_common import gp_quoted, tool_arguments, write_table  # noqa: E402
 from lt88_fabric_closing import closing_run, closings, stress_ratio_curves  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -120,13 +119,9 @@ def figure(path, table, title, closing_fitted):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "kf_profile"))
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
-    ap.add_argument("--fit", default=FIT, help="the fit description to profile (default: the delivered one)")
-    ap.add_argument("k_f", nargs="+", type=float)
-    a = ap.parse_args()
-    a.out = os.path.abspath(a.out)
+    a = tool_arguments(__doc__, "kf_profile", "calibration/acst_fit",
+                       [("--fit", {"default": FIT, "help": "the fit description to profile (default: the delivered one)"}),
+                        ("k_f", {"nargs": "+", "type": float})])
     a.fit = os.path.abspath(a.fit)
     with open(a.fit) as f:
         closing_fitted = any(e.get("test") == "gap_closing" for e in json.load(f)["experiments"])
@@ -145,10 +140,7 @@ def main():
         row.update(closings(stress_ratio_curves(closing)))
         print(json.dumps(row), flush=True)
         table.append(row)
-    with open(os.path.join(a.out, "profile.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(table[0]))
-        w.writeheader()
-        w.writerows(table)
+    write_table(os.path.join(a.out, "profile.csv"), list(table[0]), table)
     which = "the delivered fit" if a.fit == FIT else os.path.basename(a.fit)
     figure(os.path.join(a.out, "profile.png"), table, f"{which} with k_f held (Toyoura sand, ACST)", closing_fitted)
 

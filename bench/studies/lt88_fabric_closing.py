@@ -16,8 +16,6 @@ closing ratios gap(12 %) / gap(6 %) of the simulated curves are set beside the m
 Writes OUT/closing.csv (k_f, the simulated and measured gaps at 6 and 12 % and their ratios,
 for omega 0 - 90 and 30 - 90) and OUT/closing.png.
 """
-import argparse
-import csv
 import json
 import os
 import subprocess
@@ -26,7 +24,7 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from calibration_runs import points, run_prediction  # noqa: E402
-from footing_common import gp_quoted, value_at  # noqa: E402
+from footing_common import gp_quoted, tool_arguments, value_at, write_table  # noqa: E402
 
 TESTS = {0: "lt88_fig5a_w00_hw1p0", 30: "lt88_fig5a_w30_hw1p0", 60: "lt88_fig5a_w60_hw1p0", 90: "lt88_fig5a_w90_hw1p0"}
 STRAINS = (6.0, 12.0)
@@ -72,13 +70,9 @@ def closings(curves):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "lt88_fabric_closing"))
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
-    ap.add_argument("--set", default=DELIVERED, help="the parameter set whose k_f is replaced")
-    ap.add_argument("k_f", nargs="+", type=float)
-    a = ap.parse_args()
-    a.out = os.path.abspath(a.out)
+    a = tool_arguments(__doc__, "lt88_fabric_closing", "calibration/acst_fit",
+                       [("--set", {"default": DELIVERED, "help": "the parameter set whose k_f is replaced"}),
+                        ("k_f", {"nargs": "+", "type": float})])
     table = []
     for k_f in a.k_f:
         if not 0.0 <= k_f <= 100.0:
@@ -87,10 +81,7 @@ def main():
         row.update(closings(stress_ratio_curves(closing_run(k_f, a.out, os.path.abspath(a.set), a.tool))))
         table.append(row)
         print(json.dumps(row), flush=True)
-    with open(os.path.join(a.out, "closing.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(table[0]))
-        w.writeheader()
-        w.writerows(table)
+    write_table(os.path.join(a.out, "closing.csv"), list(table[0]), table)
     pts = lambda key: "\n".join(f"{r['k_f']} {r[key]}" for r in table) + "\ne"
     gp = ["set terminal pngcairo size 900,600 noenhanced", f"set output {gp_quoted(os.path.join(a.out, 'closing.png'))}",
           "set grid", "set key top right", "set xlabel 'k_f (the fabric rate)'",

@@ -13,7 +13,6 @@ OUT/orientation_prediction.png (angles against omega, measured and predicted).
 
   python3 bench/studies/lt88_orientation_prediction.py [--out DIR] [--tool PATH] [--sets STEM,...]
 """
-import argparse
 import csv
 import json
 import math
@@ -21,7 +20,7 @@ import os
 import subprocess
 import tempfile
 
-from footing_common import ROOT, gp_quoted
+from footing_common import ROOT, gp_quoted, tool_arguments, write_table
 
 DATA = os.path.join(ROOT, "data", "lab", "lam_tatsuoka_1988", "phi_vs_orientation.csv")
 SERIES = {"TC-3 (H/W=1.0)": "drained_triaxial_compression", "PSC-3 (H/W=1.9)": "plane_strain_compression"}
@@ -56,11 +55,8 @@ def peak_angle(tool, set_stem, preset, omega, work):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "lt88_orientation_prediction"))
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "driver", "acst_element"))
-    ap.add_argument("--sets", default=SETS, help="comma-separated parameter-set stems in data/parameters")
-    a = ap.parse_args()
+    a = tool_arguments(__doc__, "lt88_orientation_prediction", "driver/acst_element",
+                       [("--sets", {"default": SETS, "help": "comma-separated parameter-set stems in data/parameters"})])
     os.makedirs(a.out, exist_ok=True)
     sets = a.sets.split(",")
     table = []
@@ -73,10 +69,7 @@ def main():
             table.append(row)
             print(row, flush=True)
     out_csv = os.path.join(a.out, "orientation_prediction.csv")
-    with open(out_csv, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(table[0].keys()))
-        w.writeheader()
-        w.writerows(table)
+    write_table(out_csv, list(table[0]), table)
     for s in sets:
         for test in SERIES.values():
             d = [t[s] - t["measured_phi_deg"] for t in table if t["test"] == test]

@@ -24,13 +24,12 @@ Writes OUT/prandtl.csv and OUT/prandtl.png (q over Prandtl against h/B). B/40 ta
 """
 import argparse
 import csv
-import json
 import math
 import os
 import subprocess
 import sys
 
-from footing_common import gp_quoted, read_curve
+from footing_common import gp_quoted, read_curve, run_study_case
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 PRANDTL = (2 + math.pi) * 10.0  # kPa
@@ -162,17 +161,10 @@ def main():
     rows = []
 
     def run(name, description, row, window):
-        run_dir = os.path.join(a.out, name)
+        run_dir = run_study_case(a, name, lambda: description, done=("load_settlement.csv",), indent=1)
         record = os.path.join(run_dir, "load_settlement.csv")
-        if not os.path.exists(record):
-            path = os.path.join(a.out, name + ".json")
-            with open(path, "w") as f:
-                json.dump(description, f, indent=1)
-            print(f"== {name}", flush=True)
-            done = subprocess.run([a.tool, "--quiet", "--no-plot", "--threads", str(a.threads), "--output", run_dir, path])
-            if done.returncode != 0:
-                print(f"{name}: acst_mpm exit {done.returncode}", file=sys.stderr)
-                return
+        if not os.path.exists(record):  # the run failed
+            return
         S, q = read_curve(record)
         qm = mean_q(S, q, *window)
         row.update({"S_over_B_window": f"{window[0]}-{window[1]}", "q_kPa": round(qm, 2),

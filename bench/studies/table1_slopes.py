@@ -18,7 +18,6 @@ Writes OUT/slopes.csv (case, rows, source, n, dphi_de_deg, dphi_dln_sigma3_deg,
 equivalent_de_per_ln_sigma3, rms_deg: the fit's residual; bias_deg: the simulated minus the
 measured peak, mean over the rows).
 """
-import argparse
 import csv
 import glob
 import json
@@ -29,6 +28,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from calibration_runs import run_prediction  # noqa: E402
+from footing_common import tool_arguments, write_table  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RANGES = [("all", 0.0, 1e9), ("sigma3 >= 9 kPa", 9.0, 1e9), ("sigma3 >= 45 kPa", 45.0, 1e9), ("sigma3 < 25 kPa", 0.0, 25.0)]
@@ -69,12 +69,7 @@ def run_case(text, out, tool):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "table1_slopes"))
-    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "calibration", "acst_fit"))
-    ap.add_argument("cases", nargs="+")
-    a = ap.parse_args()
-    a.out = os.path.abspath(a.out)
+    a = tool_arguments(__doc__, "table1_slopes", "calibration/acst_fit", [("cases", {"nargs": "+"})])
     table = []
     for text in a.cases:
         name, rows = run_case(text, a.out, a.tool)
@@ -90,10 +85,7 @@ def main():
                               "rms_deg": round(rms, 2),
                               "bias_deg": round(sum(r[3] - r[2] for r in chosen) / len(chosen), 2) if k == 3 else ""})
                 print(json.dumps(table[-1]), flush=True)
-    with open(os.path.join(a.out, "slopes.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(table[0]))
-        w.writeheader()
-        w.writerows(table)
+    write_table(os.path.join(a.out, "slopes.csv"), list(table[0]), table)
 
 
 if __name__ == "__main__":

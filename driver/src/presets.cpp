@@ -1,5 +1,8 @@
 #include "acst_driver/presets.hpp"
 
+#include <string>
+#include <utility>
+
 namespace acst::driver {
 
 const char* component_name(int i) {
@@ -7,22 +10,28 @@ const char* component_name(int i) {
   return names[i];
 }
 
-void set_stress_row(ControlRows& rows, int row, int component, double value, bool absolute) {
+namespace {
+
+// Row `row` made a control of its own: no coefficients yet (the caller sets them), the target
+// `value` (an increment, or the value to reach if `absolute`) and the name it is reported by.
+void start_row(ControlRows& rows, int row, double value, bool absolute, std::string name) {
   rows.A.row(row).setZero();
   rows.B.row(row).setZero();
-  rows.A(row, component) = 1.0;
   rows.value[row] = value;
   rows.absolute[row] = absolute;
-  rows.names[row] = std::string("sigma_") + component_name(component);
+  rows.names[row] = std::move(name);
+}
+
+}  // namespace
+
+void set_stress_row(ControlRows& rows, int row, int component, double value, bool absolute) {
+  start_row(rows, row, value, absolute, std::string("sigma_") + component_name(component));
+  rows.A(row, component) = 1.0;
 }
 
 void set_strain_row(ControlRows& rows, int row, int component, double value, bool absolute) {
-  rows.A.row(row).setZero();
-  rows.B.row(row).setZero();
+  start_row(rows, row, value, absolute, std::string("eps_") + component_name(component));
   rows.B(row, component) = 1.0;
-  rows.value[row] = value;
-  rows.absolute[row] = absolute;
-  rows.names[row] = std::string("eps_") + component_name(component);
 }
 
 namespace {
@@ -32,22 +41,14 @@ void hold_shear_stresses(ControlRows& rows) {
 }
 
 void equal_lateral_increments(ControlRows& rows, int row) {  // d sigma_22 - d sigma_33 = 0
-  rows.A.row(row).setZero();
-  rows.B.row(row).setZero();
+  start_row(rows, row, 0.0, false, "sigma_22 - sigma_33");
   rows.A(row, 1) = 1.0;
   rows.A(row, 2) = -1.0;
-  rows.value[row] = 0.0;
-  rows.absolute[row] = false;
-  rows.names[row] = "sigma_22 - sigma_33";
 }
 
 void mean_stress_row(ControlRows& rows, int row, double value, bool absolute) {
-  rows.A.row(row).setZero();
-  rows.B.row(row).setZero();
+  start_row(rows, row, value, absolute, "p");
   rows.A.block<1, 3>(row, 0).setConstant(1.0 / 3.0);
-  rows.value[row] = value;
-  rows.absolute[row] = absolute;
-  rows.names[row] = "p";
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "acst_calibration/cli.hpp"
 #include "acst_common/files.hpp"
 #include "acst_common/result_folder.hpp"
+#include "output_folder.hpp"
 #include "scratch.hpp"
 #include "unprivileged.hpp"
 
@@ -60,16 +61,11 @@ TEST(FitResultSet, ASecondFitReplacesTheWholeSet) {
 }
 
 TEST(FitResultSet, AFolderWithOtherFilesIsRefusedBeforeFitting) {
-  const fs::path dir = scratch_folder("fit_set_foreign");
-  const fs::path out = dir / "out";
-  fs::create_directories(out);
-  std::ofstream(out / "notes.txt") << "mine";
+  const auto [dir, out] = used_output_folder("fit_set_foreign", {{"notes.txt", "mine"}});
   std::ofstream(dir / "a.json") << fit_description("fit", "first");
   const std::vector<std::string> before = everything_under(dir);
   Outcome o = fit(dir / "a.json", out);
-  EXPECT_EQ(o.rc, 2);
-  EXPECT_NE(o.err.find("holds 'notes.txt', which this tool does not write"), std::string::npos) << o.err;
-  EXPECT_EQ(everything_under(dir), before);
+  expect_foreign_file_refused(o.rc, o.err, "notes.txt", dir, before);
   // another fit's results count as foreign too: replacing them would lose them
   fs::remove(out / "notes.txt");
   std::ofstream(out / "other_report.json") << "{}";

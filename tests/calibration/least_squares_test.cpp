@@ -27,6 +27,16 @@ LeastSquaresProblem make(Eigen::VectorXd start, Eigen::VectorXd lower, Eigen::Ve
   return p;
 }
 
+// The multi-start: a design of `design_points` points, local fits from the best `starts` of them
+// (the start included), at most `max_iterations` each; every other setting at its default.
+OptimizerSettings multi_start(int design_points, int starts, int max_iterations) {
+  OptimizerSettings o;
+  o.design_points = design_points;
+  o.starts = starts;
+  o.max_iterations = max_iterations;
+  return o;
+}
+
 TEST(BoundTransform, RoundTripDerivativeAndBounds) {
   BoundTransform t{Eigen::Vector2d(0.1, -3.0), Eigen::Vector2d(2.0, 5.0)};
   const Eigen::Vector2d theta(0.7, 4.2);
@@ -70,10 +80,7 @@ TEST(LeastSquares, StraightLineMatchesTheNormalEquations) {
 
   const auto p = make(Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(-10, -10), Eigen::Vector2d(10, 10), n,
                       [&](const Eigen::VectorXd& th) -> Eigen::VectorXd { return (th[0] + th[1] * t.array()).matrix() - y; });
-  OptimizerSettings o;
-  o.design_points = 4;
-  o.starts = 2;
-  o.max_iterations = 200;
+  OptimizerSettings o = multi_start(4, 2, 200);
   o.xtol = 1e-12;
   o.gtol = 1e-12;
   const FitResult f = fit(p, o);
@@ -94,10 +101,7 @@ TEST(LeastSquares, RosenbrockValleyWithinBounds) {
                       [](const Eigen::VectorXd& x) -> Eigen::VectorXd {
                         return Eigen::Vector2d(10.0 * (x[1] - x[0] * x[0]), 1.0 - x[0]);
                       });
-  OptimizerSettings o;
-  o.design_points = 0;
-  o.starts = 1;
-  o.max_iterations = 500;
+  OptimizerSettings o = multi_start(0, 1, 500);
   o.xtol = 1e-12;
   o.gtol = 1e-14;
   o.fd_step = 1e-7;
@@ -110,10 +114,7 @@ TEST(LeastSquares, RosenbrockValleyWithinBounds) {
 TEST(LeastSquares, BoundHoldsAndIsReported) {
   const auto p = make(Eigen::VectorXd::Constant(1, 0.5), Eigen::VectorXd::Constant(1, 0.0), Eigen::VectorXd::Constant(1, 1.0), 3,
                       [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return Eigen::Vector3d(x[0] - 2.0, x[0] - 2.1, x[0] - 1.9); });
-  OptimizerSettings o;
-  o.design_points = 2;
-  o.starts = 1;
-  o.max_iterations = 300;
+  const OptimizerSettings o = multi_start(2, 1, 300);
   const FitResult f = fit(p, o);
   EXPECT_LE(f.theta[0], 1.0);
   EXPECT_GT(f.theta[0], 0.99);
@@ -128,10 +129,7 @@ TEST(LeastSquares, BoundHoldsAndIsReported) {
 TEST(LeastSquares, AFitFarBehindTheBestIsAbandonedWithoutChangingTheResult) {
   const auto p = make(Eigen::VectorXd::Constant(1, 0.2), Eigen::VectorXd::Constant(1, -8.0), Eigen::VectorXd::Constant(1, 8.0), 2,
                       [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return Eigen::Vector2d(std::sin(x[0]), 0.3 * (x[0] - 0.5)); });
-  OptimizerSettings o;
-  o.design_points = 8;
-  o.starts = 5;
-  o.max_iterations = 100;
+  OptimizerSettings o = multi_start(8, 5, 100);
   o.xtol = 1e-12;
   const FitResult all = fit(p, o);
   o.abandon_factor = 10.0;

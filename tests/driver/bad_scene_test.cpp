@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 #include "acst_driver/cli.hpp"
 #include "driver_scenes.hpp"
@@ -112,46 +114,56 @@ fs::path fresh_directory(const std::string& name) {
   return d;
 }
 
+struct Refusal {
+  int rc;           // acst_element's exit status
+  std::string err;  // what it said
+  bool out_made;    // whether its output directory appeared
+};
+
+// acst_element run once on `scenes` (file name, JSON text), written into a fresh directory named
+// after `tag`, with `options` and an output directory in that directory.
+Refusal run_scenes(const std::string& tag, std::vector<std::string> options,
+                   const std::vector<std::pair<std::string, std::string>>& scenes) {
+  const fs::path dir = fresh_directory(tag);
+  const fs::path out = dir / "out";
+  options.insert(options.end(), {"--output", out.string()});
+  for (const auto& [name, text] : scenes) {
+    std::ofstream(dir / name) << text;
+    options.push_back((dir / name).string());
+  }
+  std::ostringstream o, e;
+  const int rc = driver::element_cli(options, o, e);
+  const Refusal r{rc, e.str(), fs::exists(out)};
+  fs::remove_all(dir);
+  return r;
+}
+
 TEST_P(BadScene, IsRejectedWithItsJsonPathAndNothingIsWritten) {
   const Case& c = GetParam();
-  const fs::path dir = fresh_directory(c.name);
-  const fs::path scene = dir / "scene.json";
-  std::ofstream(scene) << c.scene;
-  const fs::path out = dir / "out";
-  std::ostringstream o, e;
-  const int rc = driver::element_cli({"--quiet", "--output", out.string(), scene.string()}, o, e);
-  EXPECT_EQ(rc, 2);
-  for (const auto& s : c.expected) EXPECT_NE(e.str().find(s), std::string::npos) << "expected '" << s << "' in: " << e.str();
-  EXPECT_NE(e.str().find("nothing was run or written"), std::string::npos);
-  EXPECT_FALSE(fs::exists(out)) << "the output directory was created";
-  fs::remove_all(dir);
+  const Refusal r = run_scenes(c.name, {"--quiet"}, {{"scene.json", c.scene}});
+  EXPECT_EQ(r.rc, 2);
+  for (const auto& s : c.expected) EXPECT_NE(r.err.find(s), std::string::npos) << "expected '" << s << "' in: " << r.err;
+  EXPECT_NE(r.err.find("nothing was run or written"), std::string::npos);
+  EXPECT_FALSE(r.out_made) << "the output directory was created";
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, BadScene, ::testing::ValuesIn(cases()),
                          [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
 
 TEST(BadScene, OneBadSceneInABatchStopsTheWholeBatch) {
-  const fs::path dir = fresh_directory("batch");
-  std::ofstream(dir / "good.json") << with("[" + tc + "]");
-  std::ofstream(dir / "bad.json") << with("[" + tc + "]", ", \"lab_data\": 5");
-  const fs::path out = dir / "out";
-  std::ostringstream o, e;
-  EXPECT_EQ(driver::element_cli({"--output", out.string(), (dir / "good.json").string(), (dir / "bad.json").string()}, o, e), 2);
-  EXPECT_NE(e.str().find("bad.json: /lab_data: expected a file name or an array of file names"), std::string::npos) << e.str();
-  EXPECT_FALSE(fs::exists(out));
-  fs::remove_all(dir);
+  const Refusal r =
+      run_scenes("batch", {}, {{"good.json", with("[" + tc + "]")}, {"bad.json", with("[" + tc + "]", ", \"lab_data\": 5")}});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("bad.json: /lab_data: expected a file name or an array of file names"), std::string::npos) << r.err;
+  EXPECT_FALSE(r.out_made);
 }
 
 TEST(BadScene, TwoScenesWritingTheSameFilesAreRejected) {
-  const fs::path dir = fresh_directory("same_name");
-  std::ofstream(dir / "a.json") << with("[" + tc + "]", ", \"output\": {\"name\": \"x\"}");
-  std::ofstream(dir / "b.json") << with("[" + tc + "]", ", \"output\": {\"name\": \"x\"}");
-  const fs::path out = dir / "out";
-  std::ostringstream o, e;
-  EXPECT_EQ(driver::element_cli({"--output", out.string(), (dir / "a.json").string(), (dir / "b.json").string()}, o, e), 2);
-  EXPECT_NE(e.str().find("/output/name: writes to"), std::string::npos) << e.str();
-  EXPECT_FALSE(fs::exists(out));
-  fs::remove_all(dir);
+  const std::string named_x = with("[" + tc + "]", ", \"output\": {\"name\": \"x\"}");
+  const Refusal r = run_scenes("same_name", {}, {{"a.json", named_x}, {"b.json", named_x}});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("/output/name: writes to"), std::string::npos) << r.err;
+  EXPECT_FALSE(r.out_made);
 }
 
 TEST(BadScene, CommandLineErrors) {

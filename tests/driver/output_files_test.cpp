@@ -13,6 +13,7 @@
 #include "acst_driver/cli.hpp"
 #include "acst_driver/lab_data.hpp"
 #include "driver_scenes.hpp"
+#include "output_folder.hpp"
 
 namespace acst::test::driver_output_files_test {
 namespace {
@@ -72,10 +73,7 @@ TEST(OutputFiles, CsvStatesItsConventionAndHasCompleteRows) {
 }
 
 TEST(OutputFiles, FailedRunLeavesTheGoodCsvAndWritesReproducer) {
-  const fs::path dir = fresh_directory("failed");
-  const fs::path out = dir / "out";
-  fs::create_directories(out);
-  std::ofstream(out / "t.csv") << "good results\n";
+  const auto [dir, out] = used_output_folder("output_failed", {{"t.csv", "good results\n"}});
   // One 5 % increment, an integrator allowed 10 substeps and no cut-back: fails at once.
   std::ofstream(dir / "t.json") << scene_json(
       "[{\"preset\": \"drained_triaxial_compression\", \"axial_strain_pct\": 5, \"increments\": 1}]", 100.0, 0.7,

@@ -29,6 +29,13 @@ double yield_value(const Material& m, const State& s) {
   return d.R / d.g - s.H;
 }
 
+// A reload of the loaded state (Crossing::lateral_shear_reload).
+struct ReloadRun {
+  double reload_at;  // where the fine reference first turns plastic (fraction of the increment)
+  double error;      // of the one call against the fine reference
+  Report report;     // of the one call
+};
+
 class Crossing : public ::testing::Test {
  protected:
   // Dense sand (e0 0.67) from 100 kPa, drained triaxial compression to 2 % axial strain in
@@ -53,6 +60,9 @@ class Crossing : public ::testing::Test {
     EXPECT_EQ(ref.status, Status::ok) << integration::reason_text(ref.reason);
     return test::relative_stress_error(single, reference);
   }
+
+  // The loaded state's reload by compression with a lateral shear (below); prints what it measured.
+  ReloadRun lateral_shear_reload(double volumetric_part) const;
 
   const Material guide_ = test::guide_material();  // ME, STOL 1e-4
   State loaded_;
@@ -145,22 +155,23 @@ double reload_fraction(const Material& m, State s, const Sym& deps) {
 // strain eps_23 in the lateral plane, tangent to the cone at first (n:ds = 0), which carries the
 // stress back out through the cone a little later. The unloading start must be detected (the
 // cosine test) and the reload crossing bracketed by the scan over NSUB = 10 sub-intervals.
-Sym compression_with_lateral_shear(double volumetric_part) {
-  return (Sym() << volumetric_part, volumetric_part, volumetric_part, 0, 0, 3e-3).finished();
+ReloadRun Crossing::lateral_shear_reload(double volumetric_part) const {
+  const Sym deps = (Sym() << volumetric_part, volumetric_part, volumetric_part, 0, 0, 3e-3).finished();
+  ReloadRun run{reload_fraction(guide_, loaded_, deps), 0.0, {}};
+  run.error = single_increment_error(loaded_, deps, run.report);
+  std::printf("compression + lateral shear, reload at %.3f of the increment: error %.2e, unload_reload %d, "
+              "crossing iterations %d\n",
+              run.reload_at, run.error, run.report.counters.unload_reload, run.report.counters.crossing_iterations);
+  return run;
 }
 
 TEST_F(Crossing, ReloadThroughALodeAngleChangeMatchesFineIncrements) {
-  const Sym deps = compression_with_lateral_shear(6e-4);
-  const double reload_at = reload_fraction(guide_, loaded_, deps);
-  ASSERT_GT(reload_at, 0.1);  // beyond the first scan interval (measured 0.11)
-  Report r;
-  const double error = single_increment_error(loaded_, deps, r);
-  std::printf("compression + lateral shear, reload at %.3f of the increment: error %.2e, unload_reload %d\n",
-              reload_at, error, r.counters.unload_reload);
-  EXPECT_LE(error, kTolerance);
-  EXPECT_GT(r.counters.unload_reload, 0);
-  EXPECT_GT(r.counters.crossing_iterations, 0);
-  EXPECT_TRUE(r.plastic);
+  const ReloadRun run = lateral_shear_reload(6e-4);
+  ASSERT_GT(run.reload_at, 0.1);  // beyond the first scan interval (measured 0.11)
+  EXPECT_LE(run.error, kTolerance);
+  EXPECT_GT(run.report.counters.unload_reload, 0);
+  EXPECT_GT(run.report.counters.crossing_iterations, 0);
+  EXPECT_TRUE(run.report.plastic);
 }
 
 // The same with the reload inside the first scan sub-interval (at 7 % of the increment).
@@ -168,16 +179,10 @@ TEST_F(Crossing, ReloadThroughALodeAngleChangeMatchesFineIncrements) {
 // increment would be integrated as plastic and the drift correction H = R/g would shrink the
 // cone during its unloading part (error 2.4e-3, 12x the tolerance).
 TEST_F(Crossing, ReloadWithinTheFirstScanIntervalMatchesFineIncrements) {
-  const Sym deps = compression_with_lateral_shear(4e-4);
-  const double reload_at = reload_fraction(guide_, loaded_, deps);
-  ASSERT_LT(reload_at, 0.1);  // inside the first scan interval (measured 0.07)
-  Report r;
-  const double error = single_increment_error(loaded_, deps, r);
-  std::printf("compression + lateral shear, reload at %.3f of the increment: error %.2e, unload_reload %d, "
-              "crossing iterations %d\n",
-              reload_at, error, r.counters.unload_reload, r.counters.crossing_iterations);
-  EXPECT_LE(error, kTolerance);
-  EXPECT_GT(r.counters.unload_reload, 0);
+  const ReloadRun run = lateral_shear_reload(4e-4);
+  ASSERT_LT(run.reload_at, 0.1);  // inside the first scan interval (measured 0.07)
+  EXPECT_LE(run.error, kTolerance);
+  EXPECT_GT(run.report.counters.unload_reload, 0);
 }
 
 // A small reversal that stays inside the cone is elastic: no substeps, no unload-reload count,

@@ -67,10 +67,12 @@ inline ParticleGap particle_gap(const acst::mpm::Particles& a, const acst::mpm::
 }
 
 // The spread (largest minus smallest) of a particle field after `steps` steps of a scene.
-inline double spread_after(const std::string& scene, int steps, std::vector<double> acst::mpm::Particles::*field) {
+// `field(sim)`: a per-particle array of the simulation.
+template <class Field>
+double spread_after(const std::string& scene, int steps, Field&& field) {
   acst::mpm::Simulation sim = build(scene);
   for (int k = 0; k < steps; ++k) sim.step();
-  const std::vector<double>& v = sim.particles().*field;
+  const std::vector<double>& v = field(sim);
   return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
 }
 

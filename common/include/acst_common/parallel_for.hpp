@@ -50,7 +50,7 @@ void parallel_for(int threads, std::size_t n, F&& f, Schedule schedule = Schedul
     {
       const int t = omp_get_thread_num();
       // nowait: the region's own end is the one barrier (a second, the loop's, cost about a
-      // quarter of a short loop's fork and join: bench/RESULTS.md 1ac).
+      // quarter of a short loop's fork and join).
 #pragma omp for schedule(static) nowait
       for (std::size_t i = 0; i < n; ++i) guarded(t, i);
     }

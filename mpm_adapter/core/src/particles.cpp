@@ -6,8 +6,7 @@ void Particles::resize(std::size_t count, int nstate) {
   n = count;
   state_size = nstate;
   for (auto* v : {&x, &y, &x_initial, &y_initial, &vx, &vy, &mass, &weight_mass, &volume_initial, &density,
-                  &surcharge_length, &side_length, &wave_speed, &void_ratio_offset, &void_ratio_averaged, &micro_spin, &skew_stress, &couple_x,
-                  &couple_y})
+                  &surcharge_length, &side_length, &wave_speed})
     v->assign(n, 0.0);
   F.assign(4 * n, 0.0);
   for (std::size_t p = 0; p < n; ++p) F[4 * p] = F[4 * p + 3] = 1.0;

@@ -7,11 +7,13 @@
 #include <optional>
 #include <type_traits>
 
-#include "acst_mpm/dilation_averaging.hpp"
-#include "acst_mpm/material_frame.hpp"
-#include "acst_mpm/shape_functions.hpp"
+#include "acst_common/double_pair.hpp"
+#include "acst_mpm/material_update.hpp"
+#include "acst_mpm/units.hpp"
 
 namespace acst::mpm {
+
+using common::DoublePair;
 
 Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
                        std::vector<std::shared_ptr<const AbiMaterial>> materials, Particles particles,
@@ -21,35 +23,20 @@ Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
       settings_(settings),
       materials_(std::move(materials)),
       particles_(std::move(particles)),
-      particle_half_width_(particle_half_width) {
-  if (settings_.grid_follows_footing && grid_.graded())
-    throw SimulationError("the rows cannot follow the footing on a graded grid");
-  if (settings_.grid_follows_footing && boundaries_.footing.active()) {
-    // From the grid as built (spacing h): the base wall's row stays put, the row of the footing's
-    // starting base follows it.
-    rows_.on = true;
-    const Walls& walls = boundaries_.walls;
-    rows_.fixed_row = walls.base_wall != WallKind::none ? static_cast<int>(std::lround((walls.base - grid_.y0) / grid_.h)) : 0;
-    rows_.fixed_y = grid_.y0 + rows_.fixed_row * grid_.h;
-    rows_.base_row = static_cast<int>(std::lround((boundaries_.footing.base_y() - grid_.y0) / grid_.h));
-    if (rows_.base_row <= rows_.fixed_row)
-      throw SimulationError("the rows cannot follow a footing whose base lies on or below the grid's fixed row");
-  }
-  const Regularisation& reg = settings_.regularisation;
-  if (reg.internal_length > 0.0) {
-    std::vector<int> takes_part(particles_.n);
-    for (std::size_t p = 0; p < particles_.n; ++p) takes_part[p] = materials_[particles_.material[p]]->nonlocal_size() > 0;
-    const std::optional<double> mirror =
-        boundaries_.symmetric_half ? std::optional<double>(boundaries_.walls.left) : std::nullopt;
-    nonlocal_ = NonlocalAverage(reg.internal_length, reg.kernel, std::move(takes_part), mirror);
-    if (clock_.step == 0) local_void_ratios(particles_.void_ratio_averaged);
-  }
+      weights_(particle_half_width),
+      rows_(settings_.grid_follows_footing, grid_, boundaries_.walls, boundaries_.footing),
+      regulariser_(settings_.regularisation, particles_, materials_,
+                   boundaries_.symmetric_half ? std::optional<double>(boundaries_.walls.left) : std::nullopt,
+                   settings_.threads),
+      micropolar_(settings_.micropolar, particles_.n) {
   prepare();
 }
 
-void Simulation::restore(Particles particles, const Clock& clock, const Footing::Motion& motion,
-                         std::vector<double> friction) {
+void Simulation::restore(Particles particles, FeatureState features, const Clock& clock,
+                         const Footing::Motion& motion, std::vector<double> friction) {
   particles_ = std::move(particles);
+  regulariser_.state() = std::move(features.regularisation);
+  micropolar_.state() = std::move(features.micropolar);
   clock_ = clock;
   boundaries_.footing.motion() = motion;
   boundaries_.footing.friction() = std::move(friction);
@@ -63,13 +50,12 @@ bool Simulation::is_xpic_step(long long step) const {
 }
 
 void Simulation::prepare() {
-  follow_footing();  // the rows for the footing's motion (a checkpoint's, on restore)
+  rows_.follow(grid_, boundaries_.footing, clock_.step);  // for the footing's motion (a checkpoint's, on restore)
   StepScratch& w = work_;
   const std::size_t N = grid_.nodes(), n = particles_.n;
   for (auto* v : {&w.mass, &w.vx, &w.vy, &w.fx, &w.fy, &w.ax, &w.ay, &w.ux, &w.uy, &w.xpx, &w.xpy}) v->assign(N, 0.0);
   w.constraints.resize(N);
-  if (settings_.micropolar.active())
-    for (auto* v : {&w.inertia, &w.spin, &w.couple, &w.skew_fx, &w.skew_fy}) v->assign(N, 0.0);
+  micropolar_.prepare(N);
   w.first_i.assign(n, 0);
   w.first_j.assign(n, 0);
   for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * n, 0.0);
@@ -77,7 +63,7 @@ void Simulation::prepare() {
   w.pvy.assign(n, 0.0);
   w.nx = grid_.nx;
   w.scatter.configure(settings_.threads, N);
-  if (grid_.graded()) graded_domains();
+  weights_.prepare(grid_, particles_);
   if (clock_.step == 0 || particles_.wave_speed.empty() ||
       std::all_of(particles_.wave_speed.begin(), particles_.wave_speed.end(), [](double c) { return c == 0.0; }))
     refresh_wave_speeds();
@@ -120,7 +106,7 @@ double Simulation::stable_time_step() const {
   // std::max ignores as before).
   constexpr double margin = 1.0 + 1e-12;
   const Footing::SpringRate spring =
-      boundaries_.footing.spring_rate(grid_.h, particle_half_width_, stiffest_wave_speed(), margin);
+      boundaries_.footing.spring_rate(grid_.h, weights_.half_width(), stiffest_wave_speed(), margin);
   std::vector<Largest> of(work_.scatter.threads());
   parallel_for(work_.scatter.threads(), P.n, [&](int t, std::size_t p) {
     const double c = P.wave_speed[p] * scale;
@@ -138,16 +124,7 @@ double Simulation::stable_time_step() const {
   // omega keeps it stable with the CFL bound's margin (no restriction at one particle per cell
   // and factor <= 4).
   if (omega > 0.0) dt = std::min(dt, 2.0 * settings_.cfl / omega);
-  // Micropolar rotations: the stiffest rotation's frequency, omega^2 = ratio c^2 (1 + 4 l^2/h^2) / j
-  // (the relative rotation, and the couple stress's shortest wave, over the grains' inertia j).
-  if (settings_.micropolar.active()) {
-    const double l = settings_.micropolar.length, h = std::min(grid_.h, grid_.hy);
-    const double c = stiffest_wave_speed() * scale;
-    const double rotation =
-        c * std::sqrt(settings_.micropolar.modulus_ratio * (1.0 + 4.0 * l * l / (h * h)) / micro_inertia());
-    if (rotation > 0.0) dt = std::min(dt, 2.0 * settings_.cfl / rotation);
-  }
-  return dt;
+  return std::min(dt, micropolar_.stable_time_step(stiffest_wave_speed() * scale, grid_, settings_.cfl));
 }
 
 double Simulation::kinetic_energy() const {
@@ -157,6 +134,10 @@ double Simulation::kinetic_energy() const {
   return boundaries_.symmetric_half ? 2.0 * k : k;
 }
 
+void Simulation::fail_at(long long particle, const char* what) const {
+  if (particle >= 0) fail(static_cast<std::size_t>(particle), what);
+}
+
 void Simulation::fail(std::size_t p, const std::string& what, const std::string& reproducer) const {
   char where[96];
   std::snprintf(where, sizeof where, "step %lld, particle %zu at (%.4g, %.4g) m: ", clock_.step, p, particles_.x[p],
@@ -164,84 +145,8 @@ void Simulation::fail(std::size_t p, const std::string& what, const std::string&
   throw SimulationError(where + what, reproducer);
 }
 
-// On a graded grid, every particle's domain half-widths (m): the half-widths of the share of its
-// node cell it was built on (particle_half_width_ of the cell's width), so that the domains tile
-// the soil and the internal force integrates a uniform stress to none at interior nodes; in the
-// fine window particle_half_width_ h, as on the regular grid (docs/mpm.md, "The graded grid").
-void Simulation::graded_domains() {
-  const Particles& P = particles_;
-  domain_x_.resize(P.n);
-  domain_y_.resize(P.n);
-  const auto half_width = [&](const GradedAxis& a, double at) {
-    const int i = a.cell(at);
-    return particle_half_width_ * (a.node(i + 1) - a.node(i));
-  };
-  for (std::size_t p = 0; p < P.n; ++p) {
-    domain_x_[p] = half_width(grid_.graded_x, P.x_initial[p]);
-    domain_y_[p] = half_width(grid_.graded_y, P.y_initial[p]);
-  }
-}
-
-void Simulation::compute_shape_functions_graded() {
-  StepScratch& w = work_;
-  const Particles& P = particles_;
-  std::vector<long long> off_grid(w.scatter.threads(), -1);
-  parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    GradedWeights ax, ay;
-    const GradedAxis &gx = grid_.graded_x, &gy = grid_.graded_y;
-    // A particle that moved onto smaller cells has its domain narrowed to cover two intervals (the
-    // stencil's 4 nodes): the weights stay continuous in x, a sum of unity and linear-complete.
-    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) ||
-        !graded_weights(gx, P.x[p], std::min(domain_x_[p], widest_domain(gx, P.x[p])), ax) ||
-        !graded_weights(gy, P.y[p], std::min(domain_y_[p], widest_domain(gy, P.y[p])), ay)) {
-      if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
-      return;
-    }
-    w.first_i[p] = ax.first;
-    w.first_j[p] = ay.first;
-    std::copy_n(ax.w, 4, &w.wx[4 * p]);
-    std::copy_n(ax.dw, 4, &w.dwx[4 * p]);
-    std::copy_n(ay.w, 4, &w.wy[4 * p]);
-    std::copy_n(ay.dw, 4, &w.dwy[4 * p]);
-  });
-  for (long long p : off_grid)
-    if (p >= 0)
-      fail(static_cast<std::size_t>(p), "left the grid (the grid must reach two cells past every particle)");
-}
-
 void Simulation::compute_shape_functions() {
-  if (grid_.graded()) return compute_shape_functions_graded();
-  StepScratch& w = work_;
-  Particles& P = particles_;
-  const double h = grid_.h, hy = grid_.hy;
-  const B2gimpDomain domain(particle_half_width_);
-  const DoublePair spacing{h, hy};
-  std::vector<long long> off_grid(w.scatter.threads(), -1);
-  parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    const DoublePair X = DoublePair{P.x[p] - grid_.x0, P.y[p] - grid_.y0} / spacing;
-    const AxisWeights ax = axis_weights(X[0], domain), ay = axis_weights(X[1], domain);
-    if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) || ax.first < 0 || ay.first < 0 || ax.first + 3 >= grid_.nx ||
-        ay.first + 3 >= grid_.ny) {
-      if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
-      return;
-    }
-    w.first_i[p] = ax.first;
-    w.first_j[p] = ay.first;
-    for (int k = 0; k < 4; k += 2) {
-      const DoublePair gx = DoublePair{ax.dw[k], ax.dw[k + 1]} / DoublePair{h, h};
-      const DoublePair gy = DoublePair{ay.dw[k], ay.dw[k + 1]} / DoublePair{hy, hy};
-      w.wx[4 * p + k] = ax.w[k];
-      w.wx[4 * p + k + 1] = ax.w[k + 1];
-      w.dwx[4 * p + k] = gx[0];
-      w.dwx[4 * p + k + 1] = gx[1];
-      w.wy[4 * p + k] = ay.w[k];
-      w.wy[4 * p + k + 1] = ay.w[k + 1];
-      w.dwy[4 * p + k] = gy[0];
-      w.dwy[4 * p + k + 1] = gy[1];
-    }
-  });
-  for (long long p : off_grid)
-    if (p >= 0) fail(static_cast<std::size_t>(p), "left the grid (the grid must reach two cells past every particle)");
+  fail_at(weights_.compute(grid_, particles_, work_), "left the grid (the grid must reach two cells past every particle)");
 }
 
 void Simulation::apply_constraints() {
@@ -260,106 +165,11 @@ void Simulation::nodal_velocity(const double* px, const double* py, double* vx, 
   }
 }
 
-void Simulation::update_stress(const double* vx, const double* vy, double dt_half) {
-  StepScratch& w = work_;
-  Particles& P = particles_;
-  const int T = w.scatter.threads();
-  std::vector<long long> failed(T, -1);
-  std::vector<std::string> messages(T), reproducers(T);
+void Simulation::update_stress(const double* vx, const double* vy, double dt) {
   const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
-  // The regularisation's offsets from particle p on (one a particle), for a material that takes
-  // them: none while the model is local, so the local update's numbers stay as they were.
-  const auto offset_of = [&](const AbiMaterial& mat, std::size_t p) -> const double* {
-    return nonlocal_.active() && mat.nonlocal_size() > 0 ? &P.void_ratio_offset[p] : nullptr;
-  };
-  if (averaged) velocity_gradients_averaged(vx, vy);
-  // The loop is instantiated once per setting and chosen here: a branch inside it cost the
-  // default 1-2 % (bench/RESULTS.md 1t).
-  auto update_all = [&](auto averaged_gradients) {
-    const auto gradient = [&](std::size_t p) {  // L_ij = dv_i/dx_j: xx xy yx yy
-      std::array<double, 4> L;
-      if constexpr (decltype(averaged_gradients)::value)
-        std::copy_n(&w.L[4 * p], 4, L.begin());
-      else
-        L = w.velocity_gradient(p, vx, vy);
-      return L;
-    };
-    // In runs of AbiMaterial::batch_size particles: one call updates a run of one material (the
-    // library updates points of the common kind together, with the same numbers).
-    constexpr std::size_t run = AbiMaterial::batch_size;
-    parallel_for(T, (P.n + run - 1) / run, [&](int t, std::size_t r) {
-      const std::size_t first = r * run, n = std::min(P.n, first + run) - first;
-      std::array<double, 4 * run> Ls;
-      bool one_material = true;
-      for (std::size_t p = first; p < first + n; ++p) {
-        const std::array<double, 4> L = gradient(p);
-        std::copy(L.begin(), L.end(), &Ls[4 * (p - first)]);
-        one_material = one_material && P.material[p] == P.material[first];
-        double* F = &P.F[4 * p];
-        const double F0 = F[0], F1 = F[1], F2 = F[2], F3 = F[3];
-        F[0] += dt_half * (L[0] * F0 + L[1] * F2);
-        F[1] += dt_half * (L[0] * F1 + L[1] * F3);
-        F[2] += dt_half * (L[2] * F0 + L[3] * F2);
-        F[3] += dt_half * (L[2] * F1 + L[3] * F3);
-        double* e = &P.strain[3 * p];
-        e[0] += L[0] * dt_half;
-        e[1] += L[3] * dt_half;
-        e[2] += 0.5 * (L[1] + L[2]) * dt_half;
-      }
-      const auto note_failure = [&](std::size_t p, const acst_status& st) {
-        failed[t] = static_cast<long long>(p);
-        messages[t] = "material '" + materials_[P.material[p]]->name() + "': " + st.message;
-      };
-      if (one_material) {
-        std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;  // only the first failure's
-        acst_status failure;
-        const AbiMaterial& mat = *materials_[P.material[first]];
-        const std::size_t bad =
-            mat.update_batch(n, &P.stress[6 * first], P.statev.data() + P.state_size * first, Ls.data(), dt_half,
-                             &P.stress_free[first], failure, reproducer, offset_of(mat, first));
-        if (bad < n && failed[t] < 0) note_failure(first + bad, failure);
-        return;
-      }
-      for (std::size_t p = first; p < first + n; ++p) {
-        std::string* reproducer = failed[t] < 0 ? &reproducers[t] : nullptr;
-        bool free = false;
-        const AbiMaterial& mat = *materials_[P.material[p]];
-        const acst_status st = mat.update(&P.stress[6 * p], P.statev.data() + P.state_size * p, &Ls[4 * (p - first)],
-                                          dt_half, free, reproducer, offset_of(mat, p));
-        P.stress_free[p] = free;
-        if (st.code != ACST_OK && failed[t] < 0) note_failure(p, st);
-      }
-    });
-    for (int t = 0; t < T; ++t)
-      if (failed[t] >= 0) fail(static_cast<std::size_t>(failed[t]), messages[t], reproducers[t]);
-    // The followed particles' frames (a handful: outside the loop above, which stays as it was).
-    for (std::size_t k = 0; k < P.tracked.size(); ++k)
-      turn_material_frame(&P.track_frame[material_frame_size * k], gradient(static_cast<std::size_t>(P.tracked[k])).data(),
-                   dt_half);
-  };
-  if (averaged)
-    update_all(std::true_type{});
-  else
-    update_all(std::false_type{});
-}
-
-// Every particle's velocity gradient into the scratch, then each dilation rate replaced by the
-// mean over the particles in its cell (docs/mpm.md, "Volumetric locking").
-void Simulation::velocity_gradients_averaged(const double* vx, const double* vy) {
-  StepScratch& w = work_;
-  const Particles& P = particles_;
-  w.L.resize(4 * P.n);
-  w.cell.resize(P.n);
-  w.volume.resize(P.n);
-  parallel_for(w.scatter.threads(), P.n, [&](int, std::size_t p) {
-    const std::array<double, 4> L = w.velocity_gradient(p, vx, vy);
-    std::copy(L.begin(), L.end(), &w.L[4 * p]);
-    const auto i = static_cast<std::size_t>(grid_.place_x(P.x[p]).cell);
-    const auto j = static_cast<std::size_t>(grid_.place_y(P.y[p]).cell);
-    w.cell[p] = j * static_cast<std::size_t>(grid_.nx) + i;
-    w.volume[p] = P.volume(p);
-  });
-  average_dilation_over_cells(w.L, w.cell, w.volume, grid_.nodes(), w.cell_sum, w.cell_weight);
+  const MaterialFailure failure =
+      update_material_points(particles_, materials_, regulariser_, grid_, averaged, work_, vx, vy, dt);
+  if (failure.particle >= 0) fail(static_cast<std::size_t>(failure.particle), failure.message, failure.reproducer);
 }
 
 void Simulation::xpic_velocity(int order) {
@@ -399,14 +209,15 @@ void Simulation::xpic_velocity(int order) {
 // halves (update-stress-average), or once before the internal force or after the re-map.
 void Simulation::step() {
   boundaries_.footing.at_time(clock_.time);
-  regularise();
-  follow_footing();
+  regulariser_.regularise(particles_, materials_, clock_.step, work_.scatter.threads());
+  rows_.follow(grid_, boundaries_.footing, clock_.step);
   refresh_time_step();
   compute_shape_functions();
   map_mass_and_momentum();
-  map_micro_rotation();
+  micropolar_.map(particles_, work_, boundaries_.walls, grid_);
   apply_constraints();
-  update_micropolar_stress(work_.vx.data(), work_.vy.data(), clock_.dt);
+  fail_at(micropolar_.update_stress(particles_, work_, work_.vx.data(), work_.vy.data(), clock_.dt),
+          "the micropolar stresses are not finite");
   const StressUpdate when = settings_.stress_update;
   const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
   if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
@@ -418,57 +229,6 @@ void Simulation::step() {
     update_stress(work_.ux.data(), work_.uy.data(), part);  // with the re-mapped v
   }
   advance_boundaries();
-}
-
-// Every particle's local void ratio (0 for the particles of a material that takes nothing
-// nonlocally).
-void Simulation::local_void_ratios(std::vector<double>& out) const {
-  const Particles& P = particles_;
-  out.assign(P.n, 0.0);
-  parallel_for(work_.scatter.threads(), P.n, [&](int, std::size_t p) {
-    const AbiMaterial& m = *materials_[P.material[p]];
-    if (m.nonlocal_size() > 0) m.nonlocal_local(&out[p], &P.stress[6 * p], P.statev.data() + P.state_size * p);
-  });
-}
-
-// Every `every` steps, the nonlocal void ratio of every sand particle and its offset from the
-// particle's own, which the material takes for its state parameter until the next averaging
-// (docs/mpm.md, "Nonlocal regularisation").
-void Simulation::regularise() {
-  const Regularisation& reg = settings_.regularisation;
-  if (!nonlocal_.active() || clock_.step % reg.every != 0) return;
-  Particles& P = particles_;
-  const int T = work_.scatter.threads();
-  const double m = reg.over_nonlocal;
-  local_void_ratios(nonlocal_value_);
-  nonlocal_mean_ = nonlocal_value_;
-  if (reg.quantity == NonlocalQuantity::void_ratio) {
-    nonlocal_.average(P, nonlocal_value_.data(), nonlocal_mean_.data(), T);
-    for (std::size_t p = 0; p < P.n; ++p) P.void_ratio_offset[p] = m * (nonlocal_mean_[p] - nonlocal_value_[p]);
-    return;
-  }
-  // The changes since the last averaging, averaged: the nonlocal void ratio (the particle's own
-  // plus its offset) moves by the mean change of its neighbourhood instead of its own.
-  std::vector<double>& change = nonlocal_value_;
-  for (std::size_t p = 0; p < P.n; ++p) {
-    const double e = change[p];
-    change[p] = e - P.void_ratio_averaged[p];
-    P.void_ratio_averaged[p] = e;
-  }
-  nonlocal_.average(P, change.data(), nonlocal_mean_.data(), T);
-  for (std::size_t p = 0; p < P.n; ++p) P.void_ratio_offset[p] += m * (nonlocal_mean_[p] - change[p]);
-}
-
-// The rows between the base wall (or the grid's first row) and the footing's base keep their
-// count and share the height between them: the base stays on its node row at every settlement
-// (docs/mpm.md, "The grid follows the footing").
-void Simulation::follow_footing() {
-  if (!rows_.on) return;
-  const double height = boundaries_.footing.base_y() - rows_.fixed_y;
-  if (!(height > 0.0))
-    throw SimulationError("step " + std::to_string(clock_.step) + ": the footing's base reached the grid's fixed row");
-  grid_.hy = height / (rows_.base_row - rows_.fixed_row);
-  grid_.y0 = rows_.fixed_y - rows_.fixed_row * grid_.hy;
 }
 
 void Simulation::refresh_time_step() {
@@ -495,7 +255,7 @@ void Simulation::map_mass_and_momentum() {
 void Simulation::footing_contact() {
   Footing& f = boundaries_.footing;
   if (!f.uses_contact()) return;
-  f.touch(particles_, grid_, particle_half_width_, stiffest_wave_speed(), clock_.dt, work_.scatter.threads());
+  f.touch(particles_, grid_, weights_.half_width(), stiffest_wave_speed(), clock_.dt, work_.scatter.threads());
   reaction_[reaction_footing] = f.reaction();
 }
 
@@ -533,7 +293,7 @@ void Simulation::internal_force_and_reactions() {
     scatter(std::true_type{});
   else
     scatter(std::false_type{});
-  micropolar_force();
+  micropolar_.add_forces(P, w, boundaries_.walls, grid_, settings_.grid_damping);
   if (boundaries_.footing.uses_contact()) boundaries_.footing.spread(grid_, w.mass.data(), w.fx.data(), w.fy.data());
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
@@ -621,7 +381,7 @@ void Simulation::update_particles() {
     P.x[p] += (svx + 0.5 * (vx1 - vx0)) * clock_.dt;
     P.y[p] += (svy + 0.5 * (vy1 - vy0)) * clock_.dt;
   });
-  update_micro_spin();
+  micropolar_.update_spin(w, n, clock_.dt, settings_.particle_damping);
 }
 
 // Momentum re-extrapolated from the new particle velocities; the constrained velocity field.

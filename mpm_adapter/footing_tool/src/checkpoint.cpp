@@ -82,14 +82,18 @@ struct Reader {
   }
 };
 
-// One list of the evolving particle arrays, shared by writer (const) and reader.
-template <class P, class F>
-void particle_arrays(P& particles, F&& f) {
+// One list of the evolving particle arrays, the step features' among them, shared by writer
+// (const) and reader; in the order of the format's first version, when the features' fields were
+// the particles'.
+template <class P, class S, class F>
+void particle_arrays(P& particles, S& features, F&& f) {
   auto& p = particles;
+  auto& r = features.regularisation;
+  auto& m = features.micropolar;
   for (auto* v : {&p.x, &p.y, &p.x_initial, &p.y_initial, &p.vx, &p.vy, &p.mass, &p.weight_mass, &p.volume_initial,
                   &p.density, &p.F, &p.stress, &p.strain, &p.statev, &p.surcharge_length, &p.side_length,
-                  &p.wave_speed, &p.void_ratio_offset, &p.void_ratio_averaged, &p.track_frame, &p.micro_spin,
-                  &p.skew_stress, &p.couple_x, &p.couple_y})
+                  &p.wave_speed, &r.offset, &r.averaged, &p.track_frame, &m.spin, &m.skew_stress, &m.couple_x,
+                  &m.couple_y})
     f(*v);
   f(p.material);
   f(p.stress_free);
@@ -148,7 +152,8 @@ bool record_finite(const LoadRecord& r) {
 
 // What the checksum cannot promise for a file that was written so (a bug, or made by hand): every
 // number a run goes on with is finite and in its range, every index points into its array.
-void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, const Particles& P, const Clock& clock,
+void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, const Particles& P,
+                    const FeatureState& features, const Clock& clock,
                     const Footing::Motion& motion, const std::vector<double>& friction, const RunState& st) {
   if (!step_in_range(clock.step) || !std::isfinite(clock.time) || clock.time < 0 || !std::isfinite(clock.dt) || clock.dt < 0)
     r.refuse("holds an impossible clock (step " + std::to_string(clock.step) + ", time " + std::to_string(clock.time) + ")");
@@ -156,7 +161,7 @@ void check_restored(const Reader& r, const Scene& scene, const Simulation& sim, 
     r.refuse("holds a non-finite footing motion");
   if ((!friction.empty() && friction.size() != P.n) || !all_finite(friction))
     r.refuse("holds an impossible friction of the footing's base");
-  particle_arrays(P, [&](const auto& v) {
+  particle_arrays(P, features, [&](const auto& v) {
     if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::vector<double>>)
       if (!all_finite(v)) r.refuse("holds a non-finite particle value");
   });
@@ -221,7 +226,8 @@ void write_checkpoint(const std::string& path, const Scene& scene, const Simulat
     w.str(m.json_text);
   }
   w.pod<std::uint64_t>(sim.particles().n);
-  particle_arrays(sim.particles(), [&](const auto& v) { w.vec(v); });
+  const FeatureState features = sim.feature_state();
+  particle_arrays(sim.particles(), features, [&](const auto& v) { w.vec(v); });
   run_fields(w, sim.clock(), sim.footing().motion(), sim.footing().friction(), state);
   w.pod<std::uint64_t>(common::fnv1a64(w.out));
   acst::common::write_file_atomically(path, w.out);
@@ -260,7 +266,8 @@ void read_checkpoint(const std::string& path, const Scene& scene, Simulation& si
   r.pod(n);
   if (n != sim.particles().n) r.refuse("holds a different number of particles");
   Particles P = sim.particles();
-  particle_arrays(P, [&](auto& v) {
+  FeatureState features = sim.feature_state();
+  particle_arrays(P, features, [&](auto& v) {
     const std::size_t expected = v.size();
     r.vec(v);
     if (v.size() != expected) r.refuse("has an array of the wrong size");
@@ -271,8 +278,8 @@ void read_checkpoint(const std::string& path, const Scene& scene, Simulation& si
   std::vector<double> friction;
   run_fields(r, clock, motion, friction, st);
   if (r.at != r.end) r.refuse("has trailing data");
-  check_restored(r, scene, sim, P, clock, motion, friction, st);
-  sim.restore(std::move(P), clock, motion, std::move(friction));
+  check_restored(r, scene, sim, P, features, clock, motion, friction, st);
+  sim.restore(std::move(P), std::move(features), clock, motion, std::move(friction));
   state = std::move(st);
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "abi_model.hpp"
 #include "acst.h"
 #include "acst/material.hpp"
 #include "test_materials.hpp"
@@ -24,23 +25,13 @@ namespace c_abi_consistency_test {
 namespace {
 
 using acst::Mat6;
+using acst::test::AbiModel;
 using acst::State;
 using acst::Sym;
 
 constexpr double tight = 1e-12;  // relative: exact conversions, identical arithmetic behind them
 
 const std::string guide_path = "data/parameters/toyoura_acst_guide.json";
-
-struct ModelHandle {
-  acst_model* model = nullptr;
-  explicit ModelHandle(const std::string& json) {
-    const acst_status st = acst_model_create(&model, json.c_str());
-    EXPECT_EQ(st.code, ACST_OK) << st.message;
-  }
-  ~ModelHandle() { acst_model_destroy(model); }
-  ModelHandle(const ModelHandle&) = delete;
-  ModelHandle& operator=(const ModelHandle&) = delete;
-};
 
 // Model strain (compression positive, tensor shear) -> ABI strain (tension positive, engineering shear).
 std::vector<double> to_abi_strain(const Sym& eps) {
@@ -85,23 +76,23 @@ constexpr int path_steps = 120;
 
 TEST(CAbiConsistency, UpdateMatchesCppApiStressStateAndTangent) {
   const acst::Material mat = acst::test::guide_material();
-  ModelHandle h(acst::test::read_text(guide_path));
+  AbiModel h(acst::test::read_text(guide_path));
   State ref = mat.initial_state(acst::test::isotropic_stress(p0), e0, tilted_deposition);
 
   double stress[6], statev[ACST_NSTATV], tangent[36];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1.0, 0.4, -0.3};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
-  expect_same_point(h.model, stress, statev, ref, "initial state");
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
+  expect_same_point(h.get(), stress, statev, ref, "initial state");
 
   const std::vector<double> d = to_abi_strain(path_increment);
   for (int step = 0; step < path_steps; ++step) {
     Mat6 D;
     const acst::integration::Report rep = mat.update(ref, path_increment, &D);
     ASSERT_EQ(rep.status, acst::integration::Status::ok);
-    const acst_status st = acst_update(stress, statev, tangent, nullptr, h.model, d.data());
+    const acst_status st = acst_update(stress, statev, tangent, nullptr, h.get(), d.data());
     ASSERT_EQ(st.code, ACST_OK) << st.message;
     const std::string where = "step " + std::to_string(step);
-    expect_same_point(h.model, stress, statev, ref, where);
+    expect_same_point(h.get(), stress, statev, ref, where);
     const double tscale = D.cwiseAbs().maxCoeff();
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)
@@ -117,7 +108,7 @@ TEST(CAbiConsistency, UpdateMatchesCppApiStressStateAndTangent) {
 // its own C++ run; the padding between points must not be written.
 TEST(CAbiConsistency, BatchWithWideStridesMatchesCppApi) {
   const acst::Material mat = acst::test::guide_material();
-  ModelHandle h(acst::test::read_text(guide_path));
+  AbiModel h(acst::test::read_text(guide_path));
   constexpr size_t n = 3, ss = 9, sv = ACST_NSTATV + 3, ds = 8;
   constexpr double pad = 12345.678;
   std::vector<double> stress(n * ss, pad), statev(n * sv, pad), dstrain(n * ds, pad);
@@ -126,14 +117,14 @@ TEST(CAbiConsistency, BatchWithWideStridesMatchesCppApi) {
   const double scale[n] = {1.0, 0.5, 1.7};  // different paths per point
   for (size_t k = 0; k < n; ++k) {
     ref[k] = mat.initial_state(acst::test::isotropic_stress(p0), e0, tilted_deposition);
-    ASSERT_EQ(acst_initial_state(&statev[k * sv], &stress[k * ss], h.model, s0, e0, b).code, ACST_OK);
+    ASSERT_EQ(acst_initial_state(&statev[k * sv], &stress[k * ss], h.get(), s0, e0, b).code, ACST_OK);
     const std::vector<double> d = to_abi_strain(scale[k] * path_increment);
     std::copy(d.begin(), d.end(), dstrain.begin() + k * ds);
   }
   for (int step = 0; step < path_steps; ++step) {
     int point_status[n] = {-1, -1, -1};
     acst_counters counters;
-    const acst_status st = acst_update_batch(stress.data(), ss, statev.data(), sv, point_status, &counters, h.model,
+    const acst_status st = acst_update_batch(stress.data(), ss, statev.data(), sv, point_status, &counters, h.get(),
                                              n, dstrain.data(), ds);
     ASSERT_EQ(st.code, ACST_OK) << st.message;
     int plastic = 0;
@@ -142,7 +133,7 @@ TEST(CAbiConsistency, BatchWithWideStridesMatchesCppApi) {
       const acst::integration::Report rep = mat.update(ref[k], scale[k] * path_increment);
       ASSERT_EQ(rep.status, acst::integration::Status::ok);
       plastic += rep.plastic;
-      expect_same_point(h.model, &stress[k * ss], &statev[k * sv], ref[k],
+      expect_same_point(h.get(), &stress[k * ss], &statev[k * sv], ref[k],
                         "point " + std::to_string(k) + " step " + std::to_string(step));
     }
     EXPECT_EQ(counters.plastic, plastic) << "the batch counts its plastic points";
@@ -157,17 +148,17 @@ TEST(CAbiConsistency, BatchWithWideStridesMatchesCppApi) {
 // unloading) the response to a small increment is elastic; central differences of acst_update
 // in each ABI strain component (engineering shear) must reproduce the returned tangent.
 TEST(CAbiConsistency, ElasticTangentMatchesFiniteDifferenceOfUpdate) {
-  ModelHandle h(acst::test::read_text(guide_path));
+  AbiModel h(acst::test::read_text(guide_path));
   double stress[6], statev[ACST_NSTATV];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1.0, 0.4, -0.3};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   const std::vector<double> d = to_abi_strain(path_increment);
-  for (int step = 0; step < 60; ++step) ASSERT_EQ(acst_update(stress, statev, nullptr, nullptr, h.model, d.data()).code, ACST_OK);
+  for (int step = 0; step < 60; ++step) ASSERT_EQ(acst_update(stress, statev, nullptr, nullptr, h.get(), d.data()).code, ACST_OK);
   // Unload by a fifth of the loading path: the stress ratio drops, the point is inside the cone.
   std::vector<double> back(6);
   for (int i = 0; i < 6; ++i) back[i] = -12.0 * d[i];
   acst_counters c;
-  ASSERT_EQ(acst_update(stress, statev, nullptr, &c, h.model, back.data()).code, ACST_OK);
+  ASSERT_EQ(acst_update(stress, statev, nullptr, &c, h.get(), back.data()).code, ACST_OK);
   ASSERT_EQ(c.plastic, 0) << "the unloading increment must be elastic";
 
   // The tangent returned with a zero increment is the one at this very state (elastic).
@@ -177,7 +168,7 @@ TEST(CAbiConsistency, ElasticTangentMatchesFiniteDifferenceOfUpdate) {
     std::copy(stress, stress + 6, s);
     std::copy(statev, statev + ACST_NSTATV, q);
     const double zero[6] = {0, 0, 0, 0, 0, 0};
-    ASSERT_EQ(acst_update(s, q, T, &c, h.model, zero).code, ACST_OK);
+    ASSERT_EQ(acst_update(s, q, T, &c, h.get(), zero).code, ACST_OK);
     ASSERT_EQ(c.plastic, 0);
     for (int i = 0; i < 6; ++i) ASSERT_EQ(s[i], stress[i]) << "a zero increment leaves the stress";
   }
@@ -197,8 +188,8 @@ TEST(CAbiConsistency, ElasticTangentMatchesFiniteDifferenceOfUpdate) {
     dp[j] = hstep;
     dm[j] = -hstep;
     acst_counters cp, cm;
-    ASSERT_EQ(acst_update(sp, qp, nullptr, &cp, h.model, dp).code, ACST_OK);
-    ASSERT_EQ(acst_update(sm, qm, nullptr, &cm, h.model, dm).code, ACST_OK);
+    ASSERT_EQ(acst_update(sp, qp, nullptr, &cp, h.get(), dp).code, ACST_OK);
+    ASSERT_EQ(acst_update(sm, qm, nullptr, &cm, h.get(), dm).code, ACST_OK);
     ASSERT_EQ(cp.plastic + cm.plastic, 0) << "probe " << j << " must stay elastic";
     for (int i = 0; i < 6; ++i)
       EXPECT_NEAR(T[6 * i + j], (sp[i] - sm[i]) / (2.0 * hstep), 1e-7 * maxT) << "tangent (" << i << "," << j << ")";
@@ -206,7 +197,7 @@ TEST(CAbiConsistency, ElasticTangentMatchesFiniteDifferenceOfUpdate) {
   // Independent closed form of the isotropic elastic stiffness in engineering shear: the shear
   // diagonal is G (tau = G gamma), the normal block lambda + 2G / lambda. 1e-12: exact formulas.
   double dq[ACST_NDIAGNOSTICS];
-  ASSERT_EQ(acst_diagnostics(dq, h.model, stress, statev).code, ACST_OK);
+  ASSERT_EQ(acst_diagnostics(dq, h.get(), stress, statev).code, ACST_OK);
   ASSERT_STREQ(acst_diagnostic_name(11), "G");
   ASSERT_STREQ(acst_diagnostic_name(12), "K");
   const double G = dq[11], K = dq[12], lam = K - 2.0 * G / 3.0;
@@ -253,11 +244,11 @@ TEST(CAbiConsistency, Umat3DMatchesCppApiWithColumnMajorDdsdde) {
   const std::string text = acst::test::read_text(guide_path);
   const acst::Material mat = acst::test::guide_material();
   const std::vector<double> props = props_from_json(text);
-  ModelHandle h(text);
+  AbiModel h(text);
   State ref = mat.initial_state(acst::test::isotropic_stress(p0), e0, tilted_deposition);
   double stress[6], statev[ACST_NSTATV + 2];  // a host may give more state variables than needed
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1.0, 0.4, -0.3};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   statev[ACST_NSTATV] = statev[ACST_NSTATV + 1] = -7.0;
   const std::vector<double> d = to_abi_strain(path_increment);
   UmatCall umat;
@@ -267,7 +258,7 @@ TEST(CAbiConsistency, Umat3DMatchesCppApiWithColumnMajorDdsdde) {
     umat(stress, statev, d.data(), 6, ACST_NSTATV + 2, props.data(), static_cast<int>(props.size()));
     ASSERT_EQ(umat.pnewdt, 1.0) << "step " << step;
     const std::string where = "umat step " + std::to_string(step);
-    expect_same_point(h.model, stress, statev, ref, where);
+    expect_same_point(h.get(), stress, statev, ref, where);
     const double tscale = D.cwiseAbs().maxCoeff();
     for (int i = 0; i < 6; ++i)
       for (int j = 0; j < 6; ++j)  // DDSDDE(I, J) = d STRESS(I) / d STRAN(J), stored column-major
@@ -288,13 +279,13 @@ struct PlaneStrainPoint {
 // tangent of the material of the JSON `text` through the C++ API; returns the point's last state.
 PlaneStrainPoint expect_umat_plane_strain_matches(const std::string& text, const std::vector<double>& props) {
   const acst::Material mat = acst::Material::from_json(text);
-  ModelHandle h(text);
+  AbiModel h(text);
   PlaneStrainPoint pt{};
   const Eigen::Vector3d b3(-0.5, 0.866, 0.0);
   State ref = mat.initial_state(acst::test::isotropic_stress(p0), e0, b3);
   double stress6[6];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {-0.5, 0.866, 0.0};
-  EXPECT_EQ(acst_initial_state(pt.statev, stress6, h.model, s0, e0, b).code, ACST_OK);
+  EXPECT_EQ(acst_initial_state(pt.statev, stress6, h.get(), s0, e0, b).code, ACST_OK);
   std::copy(stress6, stress6 + 4, pt.stress);
   const Sym inc = (Sym() << -3e-5, 1e-4, 0.0, 3e-5, 0.0, 0.0).finished();
   const std::vector<double> d6 = to_abi_strain(inc);
@@ -310,7 +301,7 @@ PlaneStrainPoint expect_umat_plane_strain_matches(const std::string& text, const
     const std::string where = "plane strain step " + std::to_string(step);
     const double scale = max_abs(ref.stress), tscale = D.cwiseAbs().maxCoeff();
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(pt.stress[i], -ref.stress[i], tight * scale) << where << ", " << i;
-    EXPECT_NEAR(pt.statev[state_index(h.model, "void_ratio")], ref.void_ratio, tight) << where;
+    EXPECT_NEAR(pt.statev[state_index(h.get(), "void_ratio")], ref.void_ratio, tight) << where;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)  // 4 x 4, column-major with leading dimension NTENS
         EXPECT_NEAR(umat.ddsdde[i + 4 * j], expected_abi_tangent(D, i, j), tight * tscale) << where << " (" << i << "," << j << ")";
@@ -334,11 +325,11 @@ TEST(CAbiConsistency, UmatLodeFormFromProps23MatchesTheJsonMaterial) {
   const acst::Material mat = acst::Material::from_json(j.dump());
   std::vector<double> props = li_props;
   props.insert(props.end(), {0.0, 0.0, 1.0});  // PROPS(21) reset, PROPS(22) rotate with DROT, PROPS(23) Willam & Warnke
-  ModelHandle h(j.dump());
+  AbiModel h(j.dump());
   State ref = mat.initial_state(acst::test::isotropic_stress(p0), e0, Eigen::Vector3d(0.0, 1.0, 0.0));
   double stress6[6], statev[ACST_NSTATV], li_statev[ACST_NSTATV];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {0.0, 1.0, 0.0};
-  ASSERT_EQ(acst_initial_state(statev, stress6, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress6, h.get(), s0, e0, b).code, ACST_OK);
   std::copy(statev, statev + ACST_NSTATV, li_statev);
   double stress[4] = {-p0, -p0, -p0, 0.0}, li_stress[4] = {-p0, -p0, -p0, 0.0};
   const Sym inc = (Sym() << -4e-5, 1e-4, 0.0, 0.0, 0.0, 0.0).finished();  // plane strain: eps_33 = 0
@@ -390,15 +381,15 @@ TEST(CAbiConsistency, UmatPeakPressureExponentFromProps25MatchesTheJsonMaterial)
 TEST(CAbiConsistency, FailingIncrementRequestsStepReductionAndLeavesStateUntouched) {
   nlohmann::json j = nlohmann::json::parse(acst::test::read_text(guide_path));
   j["integrator"]["pressure_floor"] = "fail";
-  ModelHandle h(j.dump());
+  AbiModel h(j.dump());
   double stress[6], statev[ACST_NSTATV];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1, 0, 0};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   const std::vector<double> stress_before(stress, stress + 6), statev_before(statev, statev + ACST_NSTATV);
   // 3 % volumetric extension: elastically p would drop by K * 0.03 ~ 1000 kPa, far below p_min.
   const double extension[6] = {0.01, 0.01, 0.01, 0, 0, 0};
   double tangent[36];
-  const acst_status st = acst_update(stress, statev, tangent, nullptr, h.model, extension);
+  const acst_status st = acst_update(stress, statev, tangent, nullptr, h.get(), extension);
   EXPECT_EQ(st.code, ACST_STEP_REDUCTION);
   EXPECT_GT(st.suggested_step_factor, 0.0);
   EXPECT_LT(st.suggested_step_factor, 1.0);
@@ -413,7 +404,7 @@ TEST(CAbiConsistency, FailingIncrementRequestsStepReductionAndLeavesStateUntouch
     std::copy(statev_before.begin(), statev_before.end(), bq + ACST_NSTATV * k);
   }
   int ps[2] = {-1, -1};
-  const acst_status bst = acst_update_batch(bs, 6, bq, ACST_NSTATV, ps, nullptr, h.model, 2, bd, 6);
+  const acst_status bst = acst_update_batch(bs, 6, bq, ACST_NSTATV, ps, nullptr, h.get(), 2, bd, 6);
   EXPECT_EQ(bst.code, ACST_STEP_REDUCTION);
   EXPECT_NE(std::string(bst.message).find("point 0"), std::string::npos) << bst.message;
   EXPECT_EQ(ps[0], ACST_STEP_REDUCTION);
@@ -428,10 +419,10 @@ TEST(CAbiConsistency, UmatFailingIncrementSetsPnewdtBelowOneAndLeavesStateUntouc
   // STOL = 1e-20 lies below the error floor of the substepping (1e-16): every plastic substep is
   // rejected until the substep falls below its minimum, an honest step-reduction failure.
   props[19] = 1e-20;
-  ModelHandle h(text);
+  AbiModel h(text);
   double stress[6], statev[ACST_NSTATV];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1, 0, 0};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   const std::vector<double> stress_before(stress, stress + 6), statev_before(statev, statev + ACST_NSTATV);
   const std::vector<double> d = to_abi_strain(path_increment);  // plastic from the isotropic state
   UmatCall umat;
@@ -448,10 +439,10 @@ TEST(CAbiConsistency, UmatPressureFloorFailOptionRequestsStepReduction) {
   const std::string text = acst::test::read_text(guide_path);
   std::vector<double> props = props_from_json(text);
   props.push_back(1.0);  // PROPS(21): fail
-  ModelHandle h(text);
+  AbiModel h(text);
   double stress[6], statev[ACST_NSTATV];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1, 0, 0};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   const std::vector<double> stress_before(stress, stress + 6);
   const double extension[6] = {0.01, 0.01, 0.01, 0, 0, 0};
   UmatCall umat;
@@ -472,10 +463,10 @@ TEST(CAbiConsistency, UmatPressureFloorFailOptionRequestsStepReduction) {
 TEST(CAbiConsistency, UmatRejectsBadNtensAndShortPropsAsUnrecoverable) {
   const std::string text = acst::test::read_text(guide_path);
   const std::vector<double> props = props_from_json(text);
-  ModelHandle h(text);
+  AbiModel h(text);
   double stress[6], statev[ACST_NSTATV];
   const double s0[6] = {-p0, -p0, -p0, 0, 0, 0}, b[3] = {1, 0, 0};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   const std::vector<double> stress_before(stress, stress + 6), statev_before(statev, statev + ACST_NSTATV);
   const std::vector<double> d = to_abi_strain(path_increment);
   UmatCall umat;
@@ -546,10 +537,10 @@ TEST(CAbiConsistency, UmatTurnsTheFabricWithDrotAndGivesTheRotatedAnswer) {
   const std::string text = acst::test::read_text(guide_path);
   std::vector<double> props = props_from_json(text);
   props.push_back(1.0);  // PROPS(21): pressure floor policy "fail" (no silent reset here)
-  ModelHandle h(text);
+  AbiModel h(text);
   double stress[6], statev[ACST_NSTATV];
   const double s0[6] = {-150, -100, -80, 10, -5, 3}, b[3] = {1.0, 0.4, -0.3};
-  ASSERT_EQ(acst_initial_state(statev, stress, h.model, s0, e0, b).code, ACST_OK);
+  ASSERT_EQ(acst_initial_state(statev, stress, h.get(), s0, e0, b).code, ACST_OK);
   const double dstran[6] = {-2e-4, 5e-5, 4e-5, 6e-5, -3e-5, 2e-5};
   const M3 R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
 

@@ -11,14 +11,9 @@
 #include "abi_model.hpp"
 #include "acst.h"
 
-namespace c_abi_linear_elastic_test {
+namespace acst::test::c_abi_linear_elastic_test {
 
 namespace {
-
-using acst::test::AbiModel;
-using acst::test::failed_creation;
-using acst::test::Tangent;
-using acst::test::Voigt;
 
 constexpr double E = 20000.0, nu = 0.3;
 const double G = E / (2.0 * (1.0 + nu)), K = E / (3.0 * (1.0 - 2.0 * nu));
@@ -175,4 +170,4 @@ TEST(CAbiLinearElasticBadInput, UnknownModelListsEveryKind) {
 
 }  // namespace
 
-}  // namespace c_abi_linear_elastic_test
+}  // namespace acst::test::c_abi_linear_elastic_test

@@ -19,7 +19,9 @@ TEST(Micropolar, ALengthOfZeroIsTheClassicalContinuum) {
   const auto scene = mpm_test::small_sand_footing;
   mpm_test::expect_identical_runs(scene(""), scene(R"(, "micropolar": {"length_m": 0})"), 300);
   // With a length the footing's edges bend the soil: the same scene's particles carry couples.
-  EXPECT_GT(mpm_test::spread_after(scene(R"(, "micropolar": {"length_m": 0.1})"), 300, &Particles::couple_x), 1e-6);
+  EXPECT_GT(mpm_test::spread_after(scene(R"(, "micropolar": {"length_m": 0.1})"), 300,
+                                   [](const Simulation& s) -> const auto& { return s.micropolar().state().couple_x; }),
+            1e-6);
 }
 
 // A row of dense sand between smooth walls under a smooth platen over its whole width, compressed
@@ -31,13 +33,14 @@ TEST(Micropolar, AHomogeneouslyCompressedBlockGivesTheClassicalResult) {
              micropolar = mpm_test::build(scene(R"(, "micropolar": {"length_m": 0.2})"));
   for (int k = 0; k < 600; ++k) classical.step(), micropolar.step();
   const Particles &a = classical.particles(), &b = micropolar.particles();
+  const MicropolarRotations::ParticleState& rotations = micropolar.micropolar().state();
   ASSERT_EQ(a.n, 12u);
   const mpm_test::ParticleGap gap = mpm_test::particle_gap(a, b);
   EXPECT_LT(gap.stress, 1e-12);
   EXPECT_LT(gap.state, 1e-12);
   for (std::size_t p = 0; p < b.n; ++p) {
-    EXPECT_LT(std::fabs(b.skew_stress[p]), 1e-12 * gap.scale) << "particle " << p;
-    EXPECT_LT(std::hypot(b.couple_x[p], b.couple_y[p]), 1e-12 * gap.scale) << "particle " << p;
+    EXPECT_LT(std::fabs(rotations.skew_stress[p]), 1e-12 * gap.scale) << "particle " << p;
+    EXPECT_LT(std::hypot(rotations.couple_x[p], rotations.couple_y[p]), 1e-12 * gap.scale) << "particle " << p;
   }
   EXPECT_LT(a.F[3], 0.98) << "the block was compressed";
 }
@@ -55,18 +58,19 @@ TEST(Micropolar, AUniformMicroRotationSwingsAtItsClosedFormFrequency) {
       2.0, 2.0, 0.05, E, nu, rho,
       R"("micropolar": {"length_m": 0.05, "modulus_ratio": 0.5}, "walls": {"base": "fixed", "sides": "smooth"}, "stop": {"steps": 1})",
       R"({"cfl": 0.1, "grid_damping": 0})"));
-  Particles& P = sim.particles();
-  for (double& s : P.micro_spin) s = omega0;
+  const Particles& P = sim.particles();
+  std::vector<double>& spin = sim.micropolar().state().spin;
+  for (double& s : spin) s = omega0;
   std::size_t centre = 0;
   for (std::size_t p = 0; p < P.n; ++p)
     if (std::hypot(P.x[p] - 1.0, P.y[p] - 1.0) < std::hypot(P.x[centre] - 1.0, P.y[centre] - 1.0)) centre = p;
   const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu)) * 1000.0;  // constrained modulus, Pa
   const double omega = std::sqrt(ratio * M / rho) / l;
   std::vector<double> crossings;
-  double before = P.micro_spin[centre], t_before = 0.0, largest = 0.0;
+  double before = spin[centre], t_before = 0.0, largest = 0.0;
   while (crossings.size() < 3) {
     sim.step();
-    const double now = P.micro_spin[centre], t = sim.time();
+    const double now = spin[centre], t = sim.time();
     if (crossings.size() >= 1) largest = std::max(largest, std::fabs(now));
     if ((before > 0.0) != (now > 0.0)) crossings.push_back(t_before + (t - t_before) * before / (before - now));
     before = now, t_before = t;

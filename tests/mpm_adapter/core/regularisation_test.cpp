@@ -74,7 +74,7 @@ TEST(Regularisation, AnInternalLengthOfZeroIsTheLocalModel) {
   mpm_test::expect_identical_runs(scene(""), scene(R"(, "regularisation": {"internal_length_m": 0})"), 300);
   // And with a length the same scene's particles carry offsets (the averaging ran).
   EXPECT_GT(mpm_test::spread_after(scene(R"(, "regularisation": {"internal_length_m": 0.2})"), 300,
-                                   &Particles::void_ratio_offset),
+                                   [](const Simulation& s) -> const auto& { return s.regulariser().state().offset; }),
             1e-7);
 }
 
@@ -86,15 +86,16 @@ TEST(Regularisation, AHomogeneouslyCompressedBlockGivesTheLocalResult) {
   const auto scene = mpm_test::compressed_sand_row;
   Simulation local = mpm_test::build(scene("")),
              nonlocal = mpm_test::build(scene(R"(, "regularisation": {"internal_length_m": 0.2, "every_steps": 1})"));
-  const std::vector<double> state0 = local.particles().statev, averaged0 = nonlocal.particles().void_ratio_averaged;
+  const std::vector<double> state0 = local.particles().statev, averaged0 = nonlocal.regulariser().state().averaged;
   for (int k = 0; k < 600; ++k) local.step(), nonlocal.step();
   const Particles &a = local.particles(), &b = nonlocal.particles();
   ASSERT_EQ(a.n, 12u);
   const mpm_test::ParticleGap gap = mpm_test::particle_gap(a, b);
   EXPECT_LT(gap.stress, 1e-12);
   EXPECT_LT(gap.state, 1e-12);
-  for (double d : b.void_ratio_offset) EXPECT_LT(std::fabs(d), 1e-13);
-  EXPECT_GT(std::fabs(b.void_ratio_averaged[0] - averaged0[0]), 1e-3) << "the averaging followed the void ratio";
+  const Regulariser::ParticleState& averaging = nonlocal.regulariser().state();
+  for (double d : averaging.offset) EXPECT_LT(std::fabs(d), 1e-13);
+  EXPECT_GT(std::fabs(averaging.averaged[0] - averaged0[0]), 1e-3) << "the averaging followed the void ratio";
   // The compression was real and homogeneous: every particle shortened alike, by at least 2 % and
   // by no more than the platen moved (its penalty contact takes a little of it), and the state moved.
   const double platen = local.footing().settlement() / 0.1;

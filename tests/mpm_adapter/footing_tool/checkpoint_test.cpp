@@ -161,7 +161,7 @@ TEST(MpmCheckpoint, RefusesImpossibleValuesUnderAGoodChecksum) {
     spoil(sim, st);
     write_checkpoint(file, scene, sim, st);
   };
-  written([](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{-5, 0.0, 0.0}, sim.footing().motion(), sim.footing().friction()); });
+  written([](Simulation& sim, RunState&) { sim.restore(sim.particles(), sim.feature_state(), Clock{-5, 0.0, 0.0}, sim.footing().motion(), sim.footing().friction()); });
   expect_refused(file, scene, "impossible clock");
   written([](Simulation& sim, RunState&) { sim.particles().material[7] = 3; });
   expect_refused(file, scene, "particle 7 a material index out of range");
@@ -182,15 +182,15 @@ TEST(MpmCheckpoint, RefusesImpossibleValuesUnderAGoodChecksum) {
   // The largest step counts (issue 57): the next step would overflow a signed integer. Every
   // count a run goes on from is held to max_checkpoint_steps; the bound itself is taken.
   const long long largest = std::numeric_limits<long long>::max();
-  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{largest, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
+  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), sim.feature_state(), Clock{largest, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
   expect_refused(file, scene, "impossible clock (step 9223372036854775807");
-  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{max_checkpoint_steps + 1, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
+  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), sim.feature_state(), Clock{max_checkpoint_steps + 1, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
   expect_refused(file, scene, "impossible clock");
   written([&](Simulation&, RunState& st) { st.period_steps = largest; });
   expect_refused(file, scene, "impossible running sum");
   written([&](Simulation&, RunState& st) { st.history.push_back(LoadRecord{largest}); });
   expect_refused(file, scene, "impossible load record");
-  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), Clock{max_checkpoint_steps, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
+  written([&](Simulation& sim, RunState&) { sim.restore(sim.particles(), sim.feature_state(), Clock{max_checkpoint_steps, 1.0, 1e-4}, sim.footing().motion(), sim.footing().friction()); });
   {
     Simulation sim = build_simulation(scene);
     RunState st;

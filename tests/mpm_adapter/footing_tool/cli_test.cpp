@@ -12,6 +12,7 @@
 #include "acst_footing_tool/cli.hpp"
 #include "acst_footing_tool/output.hpp"
 #include "cli_capture.hpp"
+#include "output_folder.hpp"
 #include "scratch.hpp"
 
 namespace fs = std::filesystem;
@@ -154,17 +155,12 @@ TEST(MpmCli, ARerunSetsTheEarlierRunAsideInsteadOfMixingFrames) {
 
 // A folder holding anything acst_mpm does not write is refused (exit 2) and left as it was.
 TEST(MpmCli, AFolderWithOtherFilesIsRefusedAndLeftAlone) {
-  const fs::path dir = scratch("foreign");
-  const fs::path out = dir / "out";
-  fs::create_directories(out);
-  std::ofstream(out / "thesis.tex") << "years of work";
-  std::ofstream(out / "summary.json") << "{}";
+  const auto [dir, out] =
+      acst::test::used_output_folder("mpm_cli_foreign", {{"thesis.tex", "years of work"}, {"summary.json", "{}"}});
   write_elastic_scene(dir / "elastic.json", 2);
   const std::vector<std::string> before = acst::test::everything_under(out);
   const Cli c = run({"--quiet", "--no-plot", "--output", out.string(), (dir / "elastic.json").string()});
-  EXPECT_EQ(c.rc, 2);
-  EXPECT_NE(c.err.find("holds 'thesis.tex', which this tool does not write"), std::string::npos) << c.err;
-  EXPECT_EQ(acst::test::everything_under(out), before);
+  acst::test::expect_foreign_file_refused(c.rc, c.err, "thesis.tex", out, before);
   EXPECT_EQ(text_of(out / "thesis.tex"), "years of work");
   fs::remove_all(dir);
 }

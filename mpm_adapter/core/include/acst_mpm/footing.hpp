@@ -153,7 +153,7 @@ class Footing {
   // A step's touching particles and the force on each. Each thread lists its own on its own
   // cache line, and only the few touching particles are written: a force stored for every
   // particle, then read by the serial sum, moved the cache lines of one thread's half to the
-  // other core and back every step (bench/RESULTS.md 1ab).
+  // other core and back every step.
   struct Touch {
     std::size_t particle;
     ContactForce force;

@@ -2,7 +2,7 @@
 // The nonlocal average of a particle field over a neighbourhood of the internal length l (docs/mpm.md,
 // "Nonlocal regularisation"): the host's half of the sand's regularisation. The material takes
 // the averaged quantity through the C ABI (acst.h, "Nonlocal regularisation"); what is averaged
-// and how often is the simulation's (Simulation::regularise).
+// and how often is the Regulariser's (regulariser.hpp).
 //
 //   mean_i = sum_j w(|x_i - x_j|) V_j v_j / sum_j w(|x_i - x_j|) V_j
 //

@@ -4,7 +4,8 @@
 
 namespace acst::mpm {
 
-// Particle data in flat arrays (structure of arrays).
+// Particle data in flat arrays (structure of arrays). A step feature keeps its own per-particle
+// fields in its unit (MicropolarRotations, Regulariser; README, "Add a step feature").
 struct Particles {
   std::size_t n = 0;
   int state_size = 0;
@@ -20,14 +21,6 @@ struct Particles {
   // - on a right one; 0: none).
   std::vector<double> side_length;
   std::vector<double> wave_speed;
-  // The nonlocal regularisation's state (docs/mpm.md, "Nonlocal regularisation"): the averaged
-  // void ratio minus the particle's own, handed to its material with every update (0 while the
-  // model is local), and its own void ratio at the last averaging.
-  std::vector<double> void_ratio_offset, void_ratio_averaged;
-  // Micropolar rotations (docs/mpm.md, "Micropolar rotations"; zeros while they are off): the
-  // micro-rotation's rate (rad/s, counter-clockwise), the skew stress conjugate to the continuum's
-  // rotation minus the micro-rotation (kPa) and the couple stress's x and y components (kPa m).
-  std::vector<double> micro_spin, skew_stress, couple_x, couple_y;
   std::vector<int> material;    // index into Simulation::materials
   std::vector<int> stress_free;  // 1 while the material holds it at its pressure floor (docs/mpm.md)
   // Particles whose history is recorded (output/particle_histories), and per each its material

@@ -11,7 +11,7 @@ namespace acst::mpm {
 
 // The weights are bound by the divider (24 scalar divisions per particle and step): the terms
 // that depend on l alone are worked out once, and the rest are divided in pairs (the same
-// numbers, bench/RESULTS.md 1ab).
+// numbers).
 using common::DoublePair;
 
 // The terms of the ranges that depend on l alone, worked out once per loop rather than per

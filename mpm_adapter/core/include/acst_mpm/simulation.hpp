@@ -12,26 +12,20 @@
 #include <string>
 #include <vector>
 
+#include "acst_mpm/following_rows.hpp"
 #include "acst_mpm/footing.hpp"
 #include "acst_mpm/grid.hpp"
 #include "acst_mpm/material_adapter.hpp"
-#include "acst_mpm/nonlocal_average.hpp"
+#include "acst_mpm/micropolar_rotations.hpp"
+#include "acst_mpm/particle_weights.hpp"
 #include "acst_mpm/particles.hpp"
+#include "acst_mpm/regulariser.hpp"
 #include "acst_mpm/settings.hpp"
+#include "acst_mpm/simulation_error.hpp"
 #include "acst_mpm/step_scratch.hpp"
 #include "acst_mpm/walls.hpp"
 
 namespace acst::mpm {
-
-// kPa -> Pa (kPa m -> N/m): the one unit conversion of the core (simulation.cpp and
-// simulation_micropolar.cpp).
-inline constexpr double kilo = 1000.0;
-
-struct SimulationError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-  SimulationError(const std::string& what, std::string replay) : std::runtime_error(what), reproducer(std::move(replay)) {}
-  std::string reproducer;  // for a material failure: the scene acst_element replays ("" otherwise)
-};
 
 // The boundaries that load the body besides its weight (walls are geometry, kept with them).
 struct Boundaries {
@@ -50,9 +44,17 @@ struct Clock {
   double time = 0.0, dt = 0.0;
 };
 
-// The simulation owns its state; hosts read it through const accessors. The one mutable door
-// is particles(), for initial conditions before the first step (tests set velocities there);
-// a checkpoint comes back through restore().
+// The step features' particle state, checkpointed with the particles.
+struct FeatureState {
+  Regulariser::ParticleState regularisation;
+  MicropolarRotations::ParticleState micropolar;
+};
+
+// The simulation owns its state and the step's units (docs/mpm.md, "The code: three parts"): the
+// shape functions, the rows that follow the footing, the regularisation, the micropolar rotations
+// and the boundaries; step() calls their phases in order. Hosts read the state through const
+// accessors. The mutable doors are particles() and micropolar(), for initial conditions before the
+// first step (tests set velocities and spins there); a checkpoint comes back through restore().
 class Simulation {
  public:
   // `particle_half_width` is l in cells: 1/(2 n) for n particles per cell and direction.
@@ -64,8 +66,10 @@ class Simulation {
   // Advances one step; throws SimulationError naming step and particle on a material failure.
   void step();
   // Continues from a checkpoint: particles, clock, footing motion and the base's friction per
-  // particle, of the same scene.
-  void restore(Particles particles, const Clock& clock, const Footing::Motion& motion, std::vector<double> friction);
+  // particle, of the same scene, and the step features' state.
+  void restore(Particles particles, FeatureState features, const Clock& clock, const Footing::Motion& motion,
+               std::vector<double> friction);
+  FeatureState feature_state() const { return {regulariser_.state(), micropolar_.state()}; }
 
   const Grid& grid() const { return grid_; }
   const Walls& walls() const { return boundaries_.walls; }
@@ -74,6 +78,9 @@ class Simulation {
   const std::vector<std::shared_ptr<const AbiMaterial>>& materials() const { return materials_; }
   const Particles& particles() const { return particles_; }
   Particles& particles() { return particles_; }
+  const Regulariser& regulariser() const { return regulariser_; }
+  const MicropolarRotations& micropolar() const { return micropolar_; }
+  MicropolarRotations& micropolar() { return micropolar_; }
   const Clock& clock() const { return clock_; }
   long long step_count() const { return clock_.step; }
   double time() const { return clock_.time; }
@@ -87,11 +94,8 @@ class Simulation {
 
  private:
   // The steps of step(), in the order docs/mpm.md gives.
-  void regularise();
   void refresh_time_step();
   void compute_shape_functions();
-  void compute_shape_functions_graded();
-  void graded_domains();
   void map_mass_and_momentum();
   void apply_constraints();
   void update_stress(const double* vx, const double* vy, double dt);
@@ -101,18 +105,7 @@ class Simulation {
   void remap_momentum();
   void advance_boundaries();
 
-  // Micropolar rotations (simulation_micropolar.cpp; nothing while they are off).
-  void map_micro_rotation();
-  void update_micropolar_stress(const double* vx, const double* vy, double dt);
-  void micropolar_force();
-  void update_micro_spin();
-  double micropolar_modulus(std::size_t p) const;
-  double micro_inertia() const;
-
   void prepare();
-  void local_void_ratios(std::vector<double>& out) const;
-  void follow_footing();
-  void velocity_gradients_averaged(const double* vx, const double* vy);
   void refresh_wave_speeds();
   double stiffest_wave_speed() const;
   // Velocity = momentum / mass with the constraints applied (0 on nodes without mass).
@@ -120,23 +113,21 @@ class Simulation {
   void xpic_velocity(int order);
   void fold(double* field, FieldKind kind) const { boundaries_.walls.fold(field, kind, grid_); }
   [[noreturn]] void fail(std::size_t particle, const std::string& what, const std::string& reproducer = "") const;
+  // fail() where a unit reports a failed particle (>= 0); nothing for -1.
+  void fail_at(long long particle, const char* what) const;
 
   Grid grid_;
   Boundaries boundaries_;
   Settings settings_;
   std::vector<std::shared_ptr<const AbiMaterial>> materials_;
   Particles particles_;
-  double particle_half_width_ = 0.5;
-  std::vector<double> domain_x_, domain_y_;  // on a graded grid: each particle's domain half-widths, m
-  struct FollowingRows {  // laid out once from the grid as built (docs/mpm.md)
-    bool on = false;
-    int fixed_row = 0, base_row = 0;
-    double fixed_y = 0.0;
-  } rows_;
+  // The step's units (each does nothing while its feature is off).
+  ParticleWeights weights_;
+  FollowingRows rows_;
+  Regulariser regulariser_;
+  MicropolarRotations micropolar_;
   Clock clock_;
   std::array<Reaction, reaction_sets> reaction_{};
-  NonlocalAverage nonlocal_;  // inactive unless the regularisation has an internal length
-  std::vector<double> nonlocal_value_, nonlocal_mean_;
   StepScratch work_;  // owned: a copy of a Simulation has its own
 };
 

@@ -19,10 +19,6 @@ struct StepScratch {
   // Nodal fields: mass, lumped velocity v_L, force, acceleration, a second velocity field.
   std::vector<double> mass, vx, vy, fx, fy, ax, ay, ux, uy, xpx, xpy;
   NodeConstraints constraints;
-  // Micropolar rotations (docs/mpm.md, "Micropolar rotations"): the nodes' rotational inertia,
-  // spin (angular momentum, then the micro-rotation rate), couple (then the spin's rate) and the
-  // skew stress's nodal forces.
-  std::vector<double> inertia, spin, couple, skew_fx, skew_fy;
   // The body's own mass and force before the walls' mirror images are folded in.
   std::vector<double> mass_body, fx_body, fy_body;
   // Per-particle scratch: velocities mapped from the grid.
@@ -58,7 +54,7 @@ struct StepScratch {
 
   // Particle p's velocity gradient L_ij = dv_i/dx_j (xx xy yx yy) from the nodal velocities. Summed
   // in locals: summing into an array whose address goes on to the material made the compiler
-  // store it on every node of the stencil (bench/RESULTS.md 1g).
+  // store it on every node of the stencil.
   std::array<double, 4> velocity_gradient(std::size_t p, const double* vx, const double* vy) const {
     double xx = 0.0, xy = 0.0, yx = 0.0, yy = 0.0;
     stencil(p, [&](std::size_t i, double, double gx, double gy) {
