@@ -10,7 +10,7 @@ file(GLOB_RECURSE sources LIST_DIRECTORIES false
   ${SOURCE_DIR}/calibration/*.hpp ${SOURCE_DIR}/calibration/*.cpp
   ${SOURCE_DIR}/mpm_adapter/*.hpp ${SOURCE_DIR}/mpm_adapter/*.cpp
   ${SOURCE_DIR}/tests/*.hpp ${SOURCE_DIR}/tests/*.cpp ${SOURCE_DIR}/tests/*.c
-  ${SOURCE_DIR}/bench/*.hpp ${SOURCE_DIR}/bench/*.cpp ${SOURCE_DIR}/bench/*.py
+  ${SOURCE_DIR}/bench/*.hpp ${SOURCE_DIR}/bench/*.cpp ${SOURCE_DIR}/bench/*.py ${SOURCE_DIR}/studies/*.py
   ${SOURCE_DIR}/data/*.json
   ${SOURCE_DIR}/*CMakeLists.txt ${SOURCE_DIR}/*.md)
 list(FILTER sources EXCLUDE REGEX "^${SOURCE_DIR}/(build[^/]*|results|\\.git)/")

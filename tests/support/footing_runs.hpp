@@ -87,7 +87,7 @@ inline double prandtl_q_rigid_plastic(double h, const std::string& interface) {
 // right half of the Kimura footing's 14 B x 7 B domain with its graded grid (3 B window):
 // Prandtl's mechanism for phi = 30 reaches 4.8 B from the centre and 1.9 B deep. q = V/B averaged
 // over S/B 0.03-0.06, past collapse (by S/B 0.02), against c N_c = 301.4 kPa
-// (bench/studies/footing_frictional.py runs the Kimura footing itself, B = 0.9 m).
+// (studies/footing_frictional.py runs the Kimura footing itself, B = 0.9 m).
 inline double frictional_prandtl_q(double h) {
   const std::string scene = R"({"name": "frictional_prandtl", "grid": {"cell_size": )" + std::to_string(h) + R"(, "graded": {}},
     "materials": {"sand": {"model": "drucker_prager", "parameters": {"E": 100000, "nu": 0.3, "friction_angle_deg": 30, "cohesion": 10}}},

@@ -1,4 +1,4 @@
-// The short version of the recorded biaxial study (bench/studies/biaxial_band.py,
+// The short version of the recorded biaxial study (studies/biaxial_band.py,
 // bench/results/biaxial_regularised/; docs/mpm.md, "Micropolar rotations"): plane-strain
 // compression of dense Toyoura sand (0.8 x 1.6 m, sigma_3 100 kPa, a looser square at mid-height
 // on the left where the band starts) with the micropolar rotations at lc = 0.005 m, on cells of

@@ -3,7 +3,7 @@
 toyoura_acst_calibrated.json, Willam & Warnke's g; toyoura_acst_li2002_calibrated.json, Li's g) and
 with the delivered set without fabric evolution (k_f = 0, every other value as delivered).
 
-Each case is the loading-rate study's reference setting (bench/studies/footing_loading_rate.py: the
+Each case is the loading-rate study's reference setting (studies/footing_loading_rate.py: the
 bundled scene on the half domain, one stress update per step, 0.045 m/s, cfl 0.5, to S/B 0.2)
 with the set of its name. Writes:
   OUT/set_comparison.csv: per case the load at S/B 0.03, 0.06 and 0.09, the first peak, the
@@ -13,7 +13,7 @@ with the set of its name. Writes:
   OUT/set_comparison.png: the curves beside Kimura et al.'s (1985).
 A case whose summary.json exists is reused; --only picks cases (one process, one case at a time).
 
-  python3 bench/studies/footing_set_comparison.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
+  python3 studies/footing_set_comparison.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
 import json
 import os

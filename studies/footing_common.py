@@ -1,4 +1,4 @@
-"""Helpers shared by the studies in bench/studies/ (command line, the runs of acst_mpm cases, load
+"""Helpers shared by the studies in studies/ (command line, the runs of acst_mpm cases, load
 curves, tables, gnuplot quoting)."""
 import argparse
 import csv
@@ -8,14 +8,14 @@ import os
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def study_arguments(doc, out_name, only_help, switches=()):
     """The command line of a study that runs acst_mpm cases: --out, --threads, --only, --tool, and
     the study's own on/off `switches`, (flag, help) pairs."""
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", out_name))
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", out_name))
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--only", default="", help=only_help)
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
@@ -26,11 +26,11 @@ def study_arguments(doc, out_name, only_help, switches=()):
 
 def tool_arguments(doc, out_name, tool, options=()):
     """The command line of a study that runs one of the project's tools: --out (default
-    results/OUT_NAME, made absolute, as the descriptions the study writes name files in it),
+    bench/results/OUT_NAME, made absolute, as the descriptions the study writes name files in it),
     --tool (default build/TOOL, e.g. "calibration/acst_fit") and the study's `options`, (flag,
     keyword arguments) pairs."""
     ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", out_name))
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", out_name))
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", tool))
     for flag, kw in options:
         ap.add_argument(flag, **kw)

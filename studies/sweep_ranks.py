@@ -11,7 +11,7 @@ mean use. The estimate holds where every rank runs its cases as fast as the reco
 did, one thread per case (a faster or slower core scales it; two ranks that share a core's
 vector units do not).
 
-  python3 bench/studies/sweep_ranks.py data/sweeps/recorded/reference_study_local_0.09m/table.csv [--ranks 1,2,4,8,16,27]
+  python3 studies/sweep_ranks.py data/sweeps/recorded/reference_study_local_0.09m/table.csv [--ranks 1,2,4,8,16,27]
 """
 import argparse
 import csv

@@ -10,7 +10,7 @@ measured phi, over all rows and over sigma3' >= 9 kPa, where the membrane's shar
 the closing of Lam & Tatsuoka's bedding gap between 6 and 12 % axial strain
 (lt88_fabric_closing.py), the measure that turns the fabric most.
 
-  python3 bench/studies/kf_profile.py [--out DIR] [--fit DESCRIPTION.json] [--tool build/calibration/acst_fit] K_F ...
+  python3 studies/kf_profile.py [--out DIR] [--fit DESCRIPTION.json] [--tool build/calibration/acst_fit] K_F ...
 (--fit: the description to profile; default the delivered one. With toyoura_acst_closing_fit.json
 the fit itself holds the closings, "The closing in the fit".)
 Writes OUT/profile.csv (k_f, the fit's objective and each fold's pooled RMS/scale as fitted, the
@@ -29,7 +29,7 @@ from calibration_runs import run_prediction  # noqa: E402
 from footing_common import gp_quoted, tool_arguments, write_table  # noqa: E402
 from lt88_fabric_closing import closing_run, closings, stress_ratio_curves  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CALIBRATION = os.path.join(ROOT, "data", "calibration")
 FIT = os.path.join(CALIBRATION, "toyoura_acst_fit.json")
 TABLE1 = os.path.join(CALIBRATION, "toyoura_acst_table1_prediction.json")
@@ -52,7 +52,7 @@ def fit_at(k_f, out, tool, description=FIT):
     del d["parameters"]["k_f"]
     folds = d.pop("cross_validation")["folds"]
     d["name"] = tag_of(k_f)
-    d["description"] = f"{os.path.basename(description)} with k_f held at {k_f:g} (bench/studies/kf_profile.py)."
+    d["description"] = f"{os.path.basename(description)} with k_f held at {k_f:g} (studies/kf_profile.py)."
     directory = os.path.join(out, tag_of(k_f), "fit")
     d["output"] = dict(d["output"], directory=directory)
     os.makedirs(os.path.dirname(directory), exist_ok=True)

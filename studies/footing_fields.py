@@ -6,7 +6,7 @@ snapshot nearest to the settlement asked for (S/B from the run's load_settlement
 OUT/<field>_SB<S/B>.png with one panel per run (the soil within 3 B of the footing, where the
 mechanism lies) and OUT/<field>_SB<S/B>.csv with the values plotted.
 
-  python3 bench/studies/footing_fields.py --out DIR --at 0.1 [--field fabric_norm,N,...] LABEL=RUN_DIR ...
+  python3 studies/footing_fields.py --out DIR --at 0.1 [--field fabric_norm,N,...] LABEL=RUN_DIR ...
 
 Fields: any scalar the runs write (shear_strain, fabric_norm, N, void_ratio, p_kPa, q_kPa, ...).
 """

@@ -7,7 +7,7 @@ can be resumed), then writes OUT/convergence.csv (q_ult and S_ult/B, the first p
 q averaged over S/B +- 0.005, the load at S/B 0.5, steps and wall time per run) and one overlay
 figure per lab test (OUT/<test>_curves.png) with the Kimura data.
 
-  python3 bench/studies/footing_convergence.py [--out DIR] [--threads N] [--only NAME,NAME...] [--follow-footing]
+  python3 studies/footing_convergence.py [--out DIR] [--threads N] [--only NAME,NAME...] [--follow-footing]
 
 --follow-footing runs each scene with grid/follow_footing true (docs/mpm.md, "The grid follows the
 footing"), from a copy written to OUT/scenes/.
@@ -57,7 +57,7 @@ def with_rows_following(scene, out):
 
 
 def main():
-    a = study_arguments(__doc__, "convergence", "comma-separated scene names (file stems) to run; default: all",
+    a = study_arguments(__doc__, "footing_convergence", "comma-separated scene names (file stems) to run; default: all",
                         [("--follow-footing", "run every scene with grid/follow_footing true")])
     os.makedirs(a.out, exist_ok=True)
     table = []

@@ -14,7 +14,7 @@ moduli:
     (1978), Soils and Foundations 18(1): G = 900 (2.17 - e)^2 / (1 + e) p^0.4 in kgf/cm2
     (p in kgf/cm2), an upper bound: the footing strains the sand far beyond 1e-5.
 
-  python3 bench/studies/footing_initial_slope.py [--run NAME=load_settlement.csv ...]
+  python3 studies/footing_initial_slope.py [--run NAME=load_settlement.csv ...]
 """
 import argparse
 import json
@@ -23,7 +23,7 @@ import os
 
 from footing_common import read_curve
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PA = 101.325  # kPa, the model's reference pressure
 KGF_CM2 = 98.0665  # kPa
 LEVELS = (250.0, 500.0, 1000.0)

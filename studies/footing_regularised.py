@@ -11,7 +11,7 @@ case, cell_m, internal_length_m, speed_factor, cfl, q_ult_kPa, S_ult_over_B, wal
 first peak, q at S/B 0.1 and 0.25), OUT/<test>_curves.png (the runs over the centrifuge curve)
 and OUT/q_ult_against_h.png.
 
-  python3 bench/studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
+  python3 studies/footing_regularised.py [--out DIR] [--threads 2] [--stop 0.25] CASE ...
   CASE: TEST,h=0.045[,l=default|0|METRES][,speed=1][,cfl=0.5][,grid=uniform|graded][,largest=METRES]
         [,window=B][,set=acst|isotropic|FILE.json][,m=1][,lc=METRES][,kc=0.5]   (TEST: one of the reference study's
         kimura group, V85.6, V75.1, V64.6, H86.7, H76.5, H61.0; largest: the graded grid's largest cell, default 4 h;

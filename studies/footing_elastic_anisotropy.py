@@ -2,20 +2,20 @@
 """The Kimura footings with the fabric-dependent elasticity of docs/model.md section 2 (the option
 elastic_anisotropy a: Young's modulus along the fabric's major axis exp(a |F|) times across it).
 
-Each case is the loading-rate study's reference setting (bench/studies/footing_loading_rate.py: the
+Each case is the loading-rate study's reference setting (studies/footing_loading_rate.py: the
 bundled scene on the half domain, one stress update per step, 0.045 m/s, cfl 0.5, to S/B 0.2)
 with the delivered set (data/parameters/toyoura_acst_calibrated.json) and the a of its name;
 a = 0 is the delivered set itself. For V85.6 (bedding 0) a > 0 stiffens the vertical, for H86.7
 (bedding 90) it softens it. Writes:
   OUT/materials/: the parameter files (the delivered set with elastic_anisotropy a);
   OUT/elastic_anisotropy.csv: per case the secants q/(S/B) at q = 250, 500 and 1000 kPa (as
-    bench/studies/footing_initial_slope.py), the load at S/B 0.03, 0.06 and 0.09, the first peak, the
+    studies/footing_initial_slope.py), the load at S/B 0.03, 0.06 and 0.09, the first peak, the
     largest load, the RMS difference from a = 0 over S/B 0-0.09 and 0-0.2 (over a = 0's largest
     load), steps and wall time; Kimura et al.'s (1985) secants in rows of their own;
   OUT/elastic_anisotropy.png: the curves beside Kimura's.
 A case whose summary.json exists is reused; --only picks cases (one process, one case at a time).
 
-  python3 bench/studies/footing_elastic_anisotropy.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
+  python3 studies/footing_elastic_anisotropy.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
 import json
 import os

@@ -19,7 +19,7 @@ over what the element data allow. Cases already run are not run again. Writes OU
 micropolar runs, mean over S/B 0.08-0.2, and q_H / q_V of each), OUT/curves.csv (the runs' load
 curves, decimated) and OUT/interval.png (the ratios against k_f, and the load curves per pair).
 
-  python3 bench/studies/footing_kf_interval.py [--out DIR] [--h 0.03] [--stop 0.2] [--threads 2]
+  python3 studies/footing_kf_interval.py [--out DIR] [--h 0.03] [--stop 0.2] [--threads 2]
       [--micropolar RUNS] [--pairs dense|all] [LABEL=SET ...]
   (SET: acst for the delivered set's recorded runs, or a material file relative to the repository;
   default the four above)
@@ -126,7 +126,7 @@ def ratio(h, v):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "footing_kf_interval"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "footing_kf_interval"))
     ap.add_argument("--h", type=float, default=0.03, help="the window's cell, m")
     ap.add_argument("--stop", type=float, default=0.2, help="S/B to run to")
     ap.add_argument("--threads", type=int, default=2)

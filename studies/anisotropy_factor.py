@@ -15,7 +15,7 @@ points of Dr). The uncertainty: every q moved uniformly within the table's band 
 sweep's 'bands', a full spread; +-15 % at the recorded study's 0.09 m cells) in 4000 draws, the
 2.5-97.5 % range of the fitted values; and the fit's own standard error from its residuals.
 
-  python3 bench/studies/anisotropy_factor.py [--sweep DIR] [--description FILE] [--out DIR]
+  python3 studies/anisotropy_factor.py [--sweep DIR] [--description FILE] [--out DIR]
 Writes OUT/factor.csv (one row per fitted quantity), OUT/factor.json (the same with the inputs)
 and OUT/factor.png.
 """
@@ -28,7 +28,7 @@ import random
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BEDDING = [("V85.6", 0.0), ("bedding_20", 20.0), ("bedding_45", 45.0), ("bedding_70", 70.0), ("bedding_90", 90.0)]
 PAIRS = [("V85.6", "H86.7"), ("V75.1", "H76.5"), ("V64.6", "H61.0")]
 KIMURA_DENSE = ("V85.6", 1952.7, "H86.7", 1733.8)  # data/lab/kimura_1985/tests_meta.csv, q_peak_kPa

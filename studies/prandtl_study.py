@@ -20,7 +20,7 @@ scene of tests/mpm_adapter/core/footing_test.cpp). q = V/B averaged over S/B 0.0
     fixed, B/10 and B/20, rough and smooth.
 Writes OUT/prandtl.csv and OUT/prandtl.png (q over Prandtl against h/B). B/40 takes minutes.
 
-  python3 bench/studies/prandtl_study.py [--out DIR] [--threads N] [--tool PATH]
+  python3 studies/prandtl_study.py [--out DIR] [--threads N] [--tool PATH]
 """
 import argparse
 import csv
@@ -31,7 +31,7 @@ import sys
 
 from footing_common import gp_quoted, read_curve, run_study_case
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PRANDTL = (2 + math.pi) * 10.0  # kPa
 
 # name, cell size (m), interface, speed (m/s), particle update, XPIC every[, rows follow the footing]
@@ -153,7 +153,7 @@ def mean_q(S, q, lo, hi):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default=os.path.join(ROOT, "results", "prandtl"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "prandtl"))
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
     a = ap.parse_args()

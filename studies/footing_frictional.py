@@ -16,7 +16,7 @@ Writes OUT/frictional.csv (case, grid, cell_m, friction_angle_deg, dilation_angl
 cohesion_kPa, q_closed_form_kPa, q_mean_kPa, error_pct, q_at_SB0.02_kPa, wall_s) and
 OUT/q_against_h.png. A case whose summary.json exists is not run again.
 
-  python3 bench/studies/footing_frictional.py [--out DIR] [--threads 2] [--stop 0.06] CASE ...
+  python3 studies/footing_frictional.py [--out DIR] [--threads 2] [--stop 0.06] CASE ...
   CASE: h=0.045[,grid=uniform|graded][,phi=30][,psi=phi][,c=10][,E=1e5][,above=6]
         (above: the grid's cells above the soil, for the heave; the scene's 6 unless given)
 """

@@ -11,7 +11,7 @@ record thinned to 400 rows, q_ult_against_h.png (the first peak and the largest 
 cell, beside the averaged void ratio's and the local model's graded runs from
 bench/results/footing_regularised/convergence.csv) and <test>_curves.png.
 
-  python3 bench/studies/footing_micropolar.py --runs RUNS [--out DIR] [--threads 2] [--stop 0.2] CASE ...
+  python3 studies/footing_micropolar.py --runs RUNS [--out DIR] [--threads 2] [--stop 0.2] CASE ...
   CASE: TEST,h=0.03[,lc=0.0051][,kc=0.5][,speed=1][,cfl=0.5]   (TEST one of the reference study's kimura group,
         V85.6, V75.1, V64.6, H86.7, H76.5, H61.0)
 

@@ -11,7 +11,7 @@ c the fall with pressure, and -c/b the change of e that costs as much phi as one
 pressure: in a model whose peak depends on the state parameter psi = e - e_c(p) alone it is the
 critical state line's slope de_c/dln p at the peak's pressure.
 
-  python3 bench/studies/table1_slopes.py [--out DIR] [--tool build/calibration/acst_fit] CASE ...
+  python3 studies/table1_slopes.py [--out DIR] [--tool build/calibration/acst_fit] CASE ...
   CASE: NAME:DESCRIPTION[:key=value,...]   (DESCRIPTION a data/calibration file; the values
         replace the parameter set's, e.g. lambda_c=0.038,e_Gamma=0.9746)
 Writes OUT/slopes.csv (case, rows, source, n, dphi_de_deg, dphi_dln_sigma3_deg,
@@ -30,7 +30,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from calibration_runs import run_prediction  # noqa: E402
 from footing_common import tool_arguments, write_table  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RANGES = [("all", 0.0, 1e9), ("sigma3 >= 9 kPa", 9.0, 1e9), ("sigma3 >= 45 kPa", 45.0, 1e9), ("sigma3 < 25 kPa", 0.0, 25.0)]
 
 

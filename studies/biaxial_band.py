@@ -9,7 +9,7 @@ measured: the axial stress ratio sigma_1/sigma_3 against the axial strain, its p
 shear band's thickness (the full width at half height of the shear-strain increment across the
 band, between two axial strains after the peak).
 
-  python3 bench/studies/biaxial_band.py --out DIR [--threads 2] CASE ...
+  python3 studies/biaxial_band.py --out DIR [--threads 2] CASE ...
   CASE: h=0.025,l=0.05[,kernel=gauss|galavi_schweiger][,averaged=void_ratio_increments|void_ratio]
         [,m=1][,every=20][,weak=0.1][,lc=0.02][,kc=0.5]   (l=0: the local model; weak: the
         imperfection's side, m; lc, kc: micropolar rotations' length, m, and modulus ratio)
@@ -45,7 +45,7 @@ def scene(case, speed, strain_to):
               dict(base, name="beside", x_range=[weak, WIDTH], y_range=[weak_lo, weak_hi], void_ratio=e0),
               dict(base, name="above", x_range=[0, WIDTH], y_range=[weak_hi, HEIGHT], void_ratio=e0)]
     s = {"name": case["name"],
-         "description": "Plane-strain biaxial compression of dense Toyoura sand (bench/studies/biaxial_band.py)",
+         "description": "Plane-strain biaxial compression of dense Toyoura sand (studies/biaxial_band.py)",
          "grid": {"cell_size": h, "cells_above": 4, "cells_beside": int(math.ceil(0.3 / h))},
          "materials": {"toyoura": os.path.join(ROOT, "data", "parameters", "toyoura_acst_calibrated.json")},
          "bodies": bodies,
@@ -184,8 +184,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--speed", type=float, default=0.1, help="platen speed, m/s")
     ap.add_argument("--strain", type=float, default=0.12, help="axial strain to run to")
-    ap.add_argument("--band-from", type=float, default=6.0, help="axial strain (%) of the first frame of the band increment")
-    ap.add_argument("--band-to", type=float, default=10.0, help="axial strain (%) of the second")
+    ap.add_argument("--band-from", type=float, default=6.0, help="axial strain (%%) of the first frame of the band increment")
+    ap.add_argument("--band-to", type=float, default=10.0, help="axial strain (%%) of the second")
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "mpm_adapter", "acst_mpm"))
     ap.add_argument("--analyse-only", action="store_true")
     ap.add_argument("--size", type=float, default=1.0, help="the sample's width and height times 0.8 x 1.6 m")

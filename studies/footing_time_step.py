@@ -22,7 +22,7 @@ as it is. Writes:
 A case whose summary.json exists is reused, so the study resumes; cases can be spread over
 processes with --only.
 
-  python3 bench/studies/footing_time_step.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
+  python3 studies/footing_time_step.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
 import os
 import sys

@@ -11,7 +11,7 @@ critical state; with k_f = 0 the model keeps only the second, so the driver sepa
 For each k_f the four tests run once with the delivered set (its other values unchanged), and the
 closing ratios gap(12 %) / gap(6 %) of the simulated curves are set beside the measured ones.
 
-  python3 bench/studies/lt88_fabric_closing.py [--out DIR] [--set PARAMETERS.json] [--tool build/calibration/acst_fit] K_F ...
+  python3 studies/lt88_fabric_closing.py [--out DIR] [--set PARAMETERS.json] [--tool build/calibration/acst_fit] K_F ...
 (--set: the parameter set whose k_f is replaced; default the delivered one)
 Writes OUT/closing.csv (k_f, the simulated and measured gaps at 6 and 12 % and their ratios,
 for omega 0 - 90 and 30 - 90) and OUT/closing.png.
@@ -21,7 +21,7 @@ import os
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from calibration_runs import points, run_prediction  # noqa: E402
 from footing_common import gp_quoted, tool_arguments, value_at, write_table  # noqa: E402

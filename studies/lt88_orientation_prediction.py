@@ -11,7 +11,7 @@ asin((sigma1 - sigma3)/(sigma1 + sigma3)) is compared with the measured angle. E
 set named is run. Writes OUT/orientation_prediction.csv (one row per set and test) and
 OUT/orientation_prediction.png (angles against omega, measured and predicted).
 
-  python3 bench/studies/lt88_orientation_prediction.py [--out DIR] [--tool PATH] [--sets STEM,...]
+  python3 studies/lt88_orientation_prediction.py [--out DIR] [--tool PATH] [--sets STEM,...]
 """
 import csv
 import json

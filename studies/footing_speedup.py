@@ -13,7 +13,7 @@ every 0.005 B) over the reference q_ult, the largest kinetic-to-work ratio past 
 time. Writes OUT/speedup.csv and OUT/speedup.png (wall time against both errors); runs whose
 summary.json or failure record exists are reused, so the study resumes.
 
-  python3 bench/studies/footing_speedup.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
+  python3 studies/footing_speedup.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
 import csv
 import json

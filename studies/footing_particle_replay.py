@@ -11,7 +11,7 @@ Writes OUT/replays.csv (per particle: q of the MPM and of each replay at the foo
 their maxima up to S/B 0.2, the RMS gap of the replay to the MPM's stresses over the whole run,
 the rotation at the peak) and OUT/<run>_replays.png (q against S/B for each particle).
 
-  python3 bench/studies/footing_particle_replay.py --run V85.6=DIR --run H86.7=DIR \\
+  python3 studies/footing_particle_replay.py --run V85.6=DIR --run H86.7=DIR \\
       --material data/parameters/toyoura_acst_calibrated.json --out DIR
 """
 import argparse
@@ -26,7 +26,7 @@ import sys
 
 from footing_common import gp_quoted
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STEM = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9._-]{0,99}$")
 STRAINS = ["eps_11_pct", "eps_22_pct", "eps_33_pct", "gamma_12_pct", "gamma_13_pct", "gamma_23_pct"]
 STRESSES = ["sigma_11_kPa", "sigma_22_kPa", "sigma_33_kPa", "sigma_12_kPa", "sigma_13_kPa", "sigma_23_kPa"]

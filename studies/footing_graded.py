@@ -2,7 +2,7 @@
 """The graded grid against the uniform one on the Kimura footings (docs/mpm.md, "The graded
 grid"; results in bench/results/footing_graded/).
 
-Reads the runs of bench/studies/footing_regularised.py: each graded case (grid=graded, any window,
+Reads the runs of studies/footing_regularised.py: each graded case (grid=graded, any window,
 largest cell and speed) against the uniform case of the same test, cell, internal length and CFL
 at the study's speed, its reference. Writes
 OUT/graded.csv (case, grid, cell_m, internal_length_m, speed_factor, threads, q_ult_kPa,
@@ -10,7 +10,7 @@ S_ult_over_B, rms_vs_reference_pct over the S/B range both runs reach, the same 
 the peak), wall_s, particles, steps, the window and the largest cell) and
 OUT/<test>_graded.png (both grids' curves).
 
-  python3 bench/studies/footing_graded.py --uniform DIR --graded DIR [--out DIR]
+  python3 studies/footing_graded.py --uniform DIR --graded DIR [--out DIR]
 """
 import argparse
 import csv

@@ -14,7 +14,7 @@ peak). Writes:
 A case whose summary.json exists is reused, so the study resumes; cases can be spread over
 processes with --only (each process one case at a time).
 
-  python3 bench/studies/footing_loading_rate.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
+  python3 studies/footing_loading_rate.py [--out DIR] [--threads N] [--only NAME,...] [--tool PATH]
 """
 import json
 import os
