@@ -9,12 +9,7 @@ namespace {
 
 lanes::Constants constants_of(const Material& material) {
   const Parameters& p = material.parameters();
-  const integration::Options& o = material.options();
-  return {lode_shape(p).form == LodeForm::willam_warnke,
-          p.c, p.R_tolerance, p.p_min, p.G0, p.nu, p.e_Gamma, p.lambda_c, p.xi, p.e_A, p.d1, p.m, p.Mc, p.h1, p.h2,
-          p.h_min, p.n, p.peak_pressure_exponent, p.k_f,
-          o.ftol, o.ltol, o.stol,
-          o.reuse_last_substep};
+  return {p, material.options(), lode_shape(p).form == LodeForm::willam_warnke};
 }
 
 }  // namespace

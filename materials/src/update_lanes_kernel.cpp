@@ -1,17 +1,19 @@
 // The lanes' update (include/acst/update_lanes.hpp). Its formulas are the model's own functions,
-// the ones Material::update calls (the headers' ACST_INLINE forms, acst/inline.hpp): what this
-// file writes is the lanes' own part, which lanes take which route (the entry checks, the tests of
-// the elastic and the plastic route, the flags of lanes that are left for Material::update), the
-// loads and stores lane by lane, the integrator's two steps (Heun's and modified Euler's, as
-// integration/explicit_substepping.hpp takes them) and the calls to pow and exp, once per lane
-// outside the vector loops as the scalar code calls them. With no contraction into FMA and no
-// reassociation (the flags of this file, materials/CMakeLists.txt) and with IEEE division and
-// square root, a lane rounds exactly as the scalar code does: tests/materials/update_lanes_test.cpp
-// compares the two bit for bit over states of every kind.
+// the ones Material::update calls (the headers' ACST_INLINE forms, acst/inline.hpp), and so are
+// the integrator's two steps, Heun's and one modified-Euler substep (integration/steps.hpp, which
+// integration/explicit_substepping.hpp calls): what this file writes is the lanes' own part, which
+// lanes take which route (the entry checks, the tests of the elastic and the plastic route, the
+// flags of lanes that are left for Material::update), the loads and stores lane by lane, and the
+// calls to pow and exp, once per lane outside the vector loops as the scalar code calls them.
+// With no contraction into FMA and no reassociation (the flags of this file,
+// materials/CMakeLists.txt) and with IEEE division and square root, a lane rounds exactly as the
+// scalar code does: tests/materials/update_lanes_test.cpp compares the two bit for bit over states
+// of every kind.
 #include <cmath>
 #include <limits>
 
 #include "acst/acst_rates.hpp"
+#include "acst/integration/steps.hpp"
 #include "update_lanes_kernel.hpp"
 
 #ifndef ACST_LANES_TARGET
@@ -27,16 +29,20 @@ namespace {
 
 constexpr int W = UpdateLanes::width;
 
+// The plastic route's scheme: one substep of modified Euler, whose stages and solution the steps
+// of the scalar integrator form (integration/steps.hpp).
+constexpr const integration::Tableau& me = integration::modified_euler_tableau;
+
 ACST_INLINE int finite(double x) { return std::abs(x) <= std::numeric_limits<double>::max(); }
 
 // The Lode function of the unit deviator scale a (lode.hpp's lode_interpolation); `general` is
 // set where Willam & Warnke's angle would need acos (not a lane's work).
 template <bool WW>
 ACST_INLINE LodeInterpolation lode(const Constants& k, double sin3theta, const double* a, double scale, int& general) {
-  if constexpr (!WW) return lode_interpolation(k.c, sin3theta);
+  if constexpr (!WW) return lode_interpolation(k.p.c, sin3theta);
   if constexpr (WW) {
     general |= !plane_shear(a);
-    return willam_warnke_at(k.c, cosine_from_principal_values(a, scale));
+    return willam_warnke_at(k.p.c, cosine_from_principal_values(a, scale));
   }
 }
 
@@ -46,7 +52,7 @@ template <bool WW>
 ACST_INLINE double yield_value(const Constants& k, const double* sigma, double H, int& unusable) {
   double d[6];
   const YieldInvariants v = yield_invariants(sigma, d);
-  unusable |= v.R < k.R_tolerance;
+  unusable |= v.R < k.p.R_tolerance;
   return yield_function(v.R, lode<WW>(k, v.sin3theta, d, v.scale, unusable).g, H);
 }
 
@@ -61,7 +67,7 @@ ACST_INLINE Ratio ratio_state(const Constants& k, const double* sigma, int& unus
   Ratio st;
   const double r_norm = stress_ratio(sigma, st.r);
   st.R = stress_ratio_invariant_of_norm(r_norm);
-  unusable |= st.R < k.R_tolerance;
+  unusable |= st.R < k.p.R_tolerance;
   st.direction = loading_direction(
       st.r, r_norm,
       [&](double s, const double* r_hat) __attribute__((always_inline)) { return lode<WW>(k, s, r_hat, 1.0, unusable); },
@@ -117,12 +123,12 @@ ACST_INLINE void quantities_before_pow(const Constants& k, const double* y, cons
   st.g[l] = ratio.direction.lode.g;
   st.clamped[l] = ratio.direction.lode_clamped;
   const double p = mean_stress(y);
-  const double G = shear_modulus(k.G0, k.p_min, y[12], p);
+  const double G = shear_modulus(k.p.G0, k.p.p_min, y[12], p);
   st.G[l] = G;
-  st.K[l] = bulk_modulus(G, k.nu);
+  st.K[l] = bulk_modulus(G, k.p.nu);
   st.A[l] = fabric_anisotropy_variable(y + 6, ratio.n);
   st.pressure_ratio[l] = normalised_pressure(p, 0.0);
-  st.peak_pressure_ratio[l] = normalised_pressure(p, k.p_min);
+  st.peak_pressure_ratio[l] = normalised_pressure(p, k.p.p_min);
 }
 
 // plastic_quantities' pow and exp calls, one per lane (zeta and n with them).
@@ -135,11 +141,11 @@ void transcendental(const Constants& k, const double (&e)[W], const double (&off
       st.exp_m_zeta[l] = st.exp_n_zeta[l] = 0.0;
       continue;
     }
-    const double e_c = critical_void_ratio(k.e_Gamma, k.lambda_c, k.xi, st.pressure_ratio[l]);
+    const double e_c = critical_void_ratio(k.p.e_Gamma, k.p.lambda_c, k.p.xi, st.pressure_ratio[l]);
     const double psi = nonlocal_state_parameter(state_parameter(e[l], e_c), offset[l]);
-    const double zeta = dilatancy_state_parameter(psi, k.e_A, st.A[l]);
-    st.exp_m_zeta[l] = dilatancy_exponential(k.m, zeta);
-    st.exp_n_zeta[l] = peak_exponential(peak_state_coefficient(k.n, k.beta, st.peak_pressure_ratio[l]), zeta);
+    const double zeta = dilatancy_state_parameter(psi, k.p.e_A, st.A[l]);
+    st.exp_m_zeta[l] = dilatancy_exponential(k.p.m, zeta);
+    st.exp_n_zeta[l] = peak_exponential(peak_state_coefficient(k.p.n, k.p.peak_pressure_exponent, st.peak_pressure_ratio[l]), zeta);
   }
 }
 
@@ -154,17 +160,17 @@ ACST_INLINE void rate_after_pow(const Constants& k, const double* y, const doubl
     n[i] = st.n[i][l];
   }
   const double e = y[12], g = st.g[l], G = st.G[l], K = st.K[l];
-  const double D = dilatancy_of_exponential(k.d1, st.exp_m_zeta[l], st.R[l], k.Mc, g);
-  const FlooredHardening h = floored_hardening_coefficient(k.h1, k.h2, k.h_min, e);
+  const double D = dilatancy_of_exponential(k.p.d1, st.exp_m_zeta[l], st.R[l], k.p.Mc, g);
+  const FlooredHardening h = floored_hardening_coefficient(k.p.h1, k.p.h2, k.p.h_min, e);
   h_floored = h.floored;
-  const double R = plastic_modulus_stress_ratio(st.R[l], k.R_tolerance);
-  const double Kp = plastic_modulus_of_exponential(G, h.h, k.Mc, g, st.exp_n_zeta[l], R);
+  const double R = plastic_modulus_stress_ratio(st.R[l], k.p.R_tolerance);
+  const double Kp = plastic_modulus_of_exponential(G, h.h, k.p.Mc, g, st.exp_n_zeta[l], R);
   const LoadingIndexTerms L = isotropic_loading_index_terms(G, K, Kp, D, n, contract(n, r), deps);
   unusable |= !(L.denominator > 0.0);
   double elastic[6], relaxed[6];
   isotropic_stress_increment(G, K, deps, elastic);
   isotropic_plastic_stress_direction(G, K, D, n, relaxed);
-  plastic_rate_of(elastic, loading_index(L), relaxed, k.k_f, n, y + 6, e, deps, dy);
+  plastic_rate_of(elastic, loading_index(L), relaxed, k.p.k_f, n, y + 6, e, deps, dy);
   bool all = true;
   #pragma GCC unroll 13
   for (int i = 0; i < 13; ++i) all = all & finite(dy[i]);
@@ -177,7 +183,7 @@ ACST_INLINE int admissible(const Constants& k, const double* y) {
   bool all = true;
   #pragma GCC unroll 13
   for (int i = 0; i < 13; ++i) all = all & finite(y[i]);
-  return all & void_ratio & stress_within_limit(y) & (mean_stress(y) >= k.p_min);
+  return all & void_ratio & stress_within_limit(y) & (mean_stress(y) >= k.p.p_min);
 }
 
 template <bool WW>
@@ -185,7 +191,7 @@ void run(const Constants& k, UpdateLanes& L) {
   int ok[W], elastic_done[W];
   double k0[13][W];
   Stage start, end;
-  const bool no_hint = !k.reuse_last_substep;
+  const bool no_hint = !k.o.reuse_last_substep;
   // The elastic test of ExplicitSubstepping::integrate and its elastic route, and the plastic
   // route's first rate up to its pow.
   for (int l = 0; l < W; ++l) {
@@ -206,35 +212,30 @@ void run(const Constants& k, UpdateLanes& L) {
     const bool whole_first_substep = no_hint | (hint >= 1.0) | !hint_usable;
     // The elastic rate k1, f0 and the unloading cosine (computed on the surface only).
     double k1[13];
-    isotropic_elastic_rate(k.G0, k.p_min, k.nu, y.v, deps, k1);
+    isotropic_elastic_rate(k.p.G0, k.p.p_min, k.p.nu, y.v, deps, k1);
     int f0_unusable = 0, ratio_unusable = 0;
     const double f0 = yield_value<WW>(k, y.v, L.H[l], f0_unusable);
-    const bool on_surface = f0 >= -k.ftol;
+    const bool on_surface = f0 >= -k.o.ftol;
     const Ratio ratio = ratio_state<WW>(k, y.v, ratio_unusable);
     const double p = mean_stress(y.v);
     double grad[6];
     yield_gradient(ratio.direction.dev_N_norm, ratio.n, ratio.r, p, grad);
-    const bool loading = cosine_between(grad, k1) > k.ltol;
+    const bool loading = cosine_between(grad, k1) > k.o.ltol;
     // The plastic route up to its first rate (with plastic_rate's pressure guard).
-    ok[l] = entry & whole_first_substep & on_surface & loading & (p >= k.p_min) & !f0_unusable & !ratio_unusable;
+    ok[l] = entry & whole_first_substep & on_surface & loading & (p >= k.p.p_min) & !f0_unusable & !ratio_unusable;
     quantities_before_pow(k, y.v, ratio, start, l);
     // The elastic route: inside the surface, or on it and not loading it; one Heun step
     // (heun_step) whose end stays inside and within STOL.
     const bool elastic = entry & !f0_unusable & ((!on_surface) | (!ratio_unusable & !loading));
     double y1[13], k2[13], y_el[13], err[13];
-    #pragma GCC unroll 13
-    for (int i = 0; i < 13; ++i) y1[i] = y.v[i] + 1.0 * k1[i];
-    isotropic_elastic_rate(k.G0, k.p_min, k.nu, y1, deps, k2);
-    #pragma GCC unroll 13
-    for (int i = 0; i < 13; ++i) {
-      y_el[i] = y.v[i] + 0.5 * (k1[i] + k2[i]);
-      err[i] = 0.5 * (k2[i] - k1[i]);
-    }
-    const double error = relative_error(k.p_min, y_el, err);
+    integration::euler_predictor<13>(y.v, k1, 1.0, y1);
+    isotropic_elastic_rate(k.p.G0, k.p.p_min, k.p.nu, y1, deps, k2);
+    integration::heun_combination<13>(y.v, k1, k2, 1.0, y_el, err);
+    const double error = relative_error(k.p.p_min, y_el, err);
     int trial_unusable = 0;
     const double f_trial = yield_value<WW>(k, y_el, L.H[l], trial_unusable);
-    const bool elastic_lane = elastic & !trial_unusable & (f_trial <= k.ftol) & finite(error) &
-                              !(max_of(error, 1e-16) > k.stol) & admissible(k, y_el) & (l < L.n);
+    const bool elastic_lane = elastic & !trial_unusable & (f_trial <= k.o.ftol) & finite(error) &
+                              !(max_of(error, 1e-16) > k.o.stol) & admissible(k, y_el) & (l < L.n);
     elastic_done[l] = elastic_lane;
     #pragma GCC unroll 13
     for (int i = 0; i < 6; ++i) L.stress[i][l] = elastic_lane ? y_el[i] : L.stress[i][l];
@@ -261,13 +262,12 @@ void run(const Constants& k, UpdateLanes& L) {
     int unusable = 0;
     double dy[13];
     rate_after_pow(k, y.v, deps, start, l, dy, unusable, start.h_floored[l]);
-    Vec ys;
     #pragma GCC unroll 13
-    for (int i = 0; i < 13; ++i) {
-      k0[i][l] = dy[i];
-      ys.v[i] = y.v[i] + 1.0 * dy[i];
-    }
-    unusable |= !(mean_stress(ys.v) >= k.p_min);
+    for (int i = 0; i < 13; ++i) k0[i][l] = dy[i];
+    Vec ys;
+    integration::stage_state<13>(me, 1, 1.0, y.v, [&](int, int i) __attribute__((always_inline)) { return dy[i]; },
+                                 ys.v);
+    unusable |= !(mean_stress(ys.v) >= k.p.p_min);
     quantities_before_pow(k, ys.v, ratio_state<WW>(k, ys.v, unusable), end, l);
     ys_e[l] = ys.v[12];
     ok[l] = ok[l] & !unusable;
@@ -278,19 +278,16 @@ void run(const Constants& k, UpdateLanes& L) {
     const Vec y = load(L.stress, L.fabric, L.void_ratio, l);
     const Strain deps = load(L.strain_increment, l);
     int unusable = 0;
-    Vec ys;
-    #pragma GCC unroll 13
-    for (int i = 0; i < 13; ++i) ys.v[i] = y.v[i] + 1.0 * k0[i][l];
     double k1[13];
+    // Stage j's rate: k0 (lane-minor) or k1.
+    const auto rates = [&](int j, int i) __attribute__((always_inline)) { return j == 0 ? k0[i][l] : k1[i]; };
+    Vec ys;
+    integration::stage_state<13>(me, 1, 1.0, y.v, rates, ys.v);
     rate_after_pow(k, ys.v, deps, end, l, k1, unusable, end.h_floored[l]);
     double y_new[13], err[13];
-    #pragma GCC unroll 13
-    for (int i = 0; i < 13; ++i) {
-      y_new[i] = (y.v[i] + 0.5 * k0[i][l]) + 0.5 * k1[i];
-      err[i] = (0.0 + -0.5 * k0[i][l]) + 0.5 * k1[i];
-    }
-    const double measured = relative_error(k.p_min, y_new, err);
-    const bool accepted = admissible(k, y_new) & finite(measured) & !(max_of(measured, 1e-16) > k.stol);
+    integration::step_solution<13, me.stages>(me, 1.0, y.v, rates, y_new, err);
+    const double measured = relative_error(k.p.p_min, y_new, err);
+    const bool accepted = admissible(k, y_new) & finite(measured) & !(max_of(measured, 1e-16) > k.o.stol);
     const double H = yield_value<WW>(k, y_new, 0.0, unusable);
     const bool done = ok[l] & accepted & !unusable & finite(H) & (H >= 0.0) & (l < L.n);
     L.done[l] = done | elastic_done[l];

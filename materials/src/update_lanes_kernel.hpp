@@ -5,12 +5,13 @@
 
 namespace acst::lanes {
 
-// The material's numbers the kernel reads, copied out of Parameters and Options.
+// The material's numbers the kernel reads: its parameter set (the struct of the parameter table,
+// acst/parameters.hpp) and its integrator options, whole and by name, so that no list of them
+// kept in step by position stands between the table and the kernel; and the Lode form they give.
 struct Constants {
+  Parameters p;
+  integration::Options o;
   bool willam_warnke;  // the Lode form: Willam & Warnke (true) or Li 2002
-  double c, R_tolerance, p_min, G0, nu, e_Gamma, lambda_c, xi, e_A, d1, m, Mc, h1, h2, h_min, n, beta, k_f;
-  double ftol, ltol, stol;
-  bool reuse_last_substep;
 };
 
 namespace generic {

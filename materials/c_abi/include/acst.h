@@ -112,18 +112,68 @@ acst_status acst_bedding_direction(double* b, double alpha_degrees, int major_ax
 acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst_model* model,
                                                   double relative_density);
 
-/* One stress update: stress[6] and statev[acst_state_size] in and out, dstrain[6] in.
- * tangent (36 doubles) and counters are optional (NULL). On any failure stress and statev are
- * left unchanged. The verification kinds return the elastic matrix or the consistent
- * elastoplastic tangent of the return, and zero counters except plastic (1 if von_mises or
- * drucker_prager yielded). Hosts with large rotations call acst_rotate_state first, or acst_update_rotated. */
+/* THE UPDATE: one entry point for any number of points, with optional per-point inputs and
+ * outputs (MGIS's pattern: a new input or output is a field of this data view, not a new
+ * function). Zero-initialise it (acst_batch b = {0};), then fill what the host has. Strides are
+ * in doubles between consecutive points and must be at least the width given in brackets where
+ * the array is present and n > 0; a pointer left NULL is an absent input or an unwanted output
+ * (its stride is then not read). A new field is appended at the end: a host rebuilt against the
+ * new header, whose view is zero-initialised, leaves it absent. */
+typedef struct acst_batch {
+  size_t n; /* number of points */
+  /* In and out, required (statev may be NULL where acst_state_size is 0). */
+  double* stress;         /* point i's 6 at stress + i stress_stride [6] */
+  size_t stress_stride;
+  double* statev;         /* point i's at statev + i statev_stride [acst_state_size] */
+  size_t statev_stride;
+  /* In, required: the strain increment (engineering shear; in the turned frame if rotation). */
+  const double* dstrain;  /* [6] */
+  size_t dstrain_stride;
+  /* Optional inputs (NULL: absent). */
+  const double* rotation; /* each point turned by its 3x3 row-major Q first, as acst_update_rotated [9] */
+  size_t rotation_stride;
+  const double* offset;   /* nonlocal offsets, as acst_update_nonlocal [acst_nonlocal_size] */
+  size_t offset_stride;
+  /* Optional outputs (NULL: not wanted). */
+  double* tangent;        /* point i's 36, row-major, written where its update is OK [36] */
+  size_t tangent_stride;
+  int* point_status;              /* n codes, one per point */
+  acst_counters* point_counters;  /* n structs, one per point (zero for a point refused on its input) */
+  acst_counters* counters;        /* one struct: the sum over the points (plastic: how many) */
+  size_t* first_failure;          /* the index of the first failed point, n where none failed */
+} acst_batch;
+
+/* Updates the n points of the view: each point's stress and state turned by its rotation (if
+ * given) and then updated over its strain increment with its nonlocal offsets (if given), every
+ * point's numbers, code and counters those of acst_update_rotated_nonlocal (rotation given) or
+ * acst_update_nonlocal (not) on it, to the last bit. All points are attempted; a failed point is
+ * left as it came (stress, state and tangent); a point whose rotation is not a proper rotation or
+ * whose offsets are out of range fails with ACST_INVALID_INPUT. The returned status is the first
+ * failed point's, its message starting with "point i: ". A NULL view or model, a required pointer
+ * that is NULL, a stride below its width, or strides that reach past the largest array a host can
+ * hold give ACST_INVALID_INPUT before any point is touched: nothing is written. The sand kinds
+ * update the points of the common kinds of update several at a time in SIMD registers where a
+ * rotation is given and no tangent asked for (docs/c-abi.md, "Many points at once").
+ * acst_update, acst_update_batch, acst_update_rotated, acst_update_rotated_batch and their
+ * _nonlocal forms (below) are thin wrappers that fill a view and call this; their numbers,
+ * codes, counters and messages are as they were (a short stride's message now names it). */
+acst_status acst_update_points(const acst_batch* points, const acst_model* model);
+
+/* One stress update (a wrapper of acst_update_points): stress[6] and statev[acst_state_size] in
+ * and out, dstrain[6] in. tangent (36 doubles) and counters are optional (NULL); counters are
+ * written after the update, failed or not. On any failure stress and statev are left unchanged,
+ * and bad input (a NULL pointer, bad offsets) writes nothing. The verification kinds return the
+ * elastic matrix or the consistent elastoplastic tangent of the return, and zero counters except
+ * plastic (1 if von_mises or drucker_prager yielded). Hosts with large rotations call
+ * acst_rotate_state first, or acst_update_rotated. */
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain);
 
-/* The same over n points; strides are in doubles between consecutive points (statev_stride at
- * least acst_state_size). point_status
- * (n ints, optional) receives each point's code; the returned status is the first failure,
- * its message naming the point. All points are attempted. */
+/* The same over n points (a wrapper of acst_update_points without rotation, offsets or tangent);
+ * strides are in doubles between consecutive points (statev_stride at least acst_state_size).
+ * point_status (n ints, optional) receives each point's code; counters (optional) the sum over
+ * the points; the returned status is the first failure, its message naming the point. All points
+ * are attempted. */
 acst_status acst_update_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
                               int* point_status, acst_counters* counters, const acst_model* model, size_t n,
                               const double* dstrain, size_t dstrain_stride);
@@ -151,7 +201,8 @@ const char* acst_diagnostic_name(int i);
  * then update with the strain increment dt sym(L) (engineering shear). */
 acst_status acst_rotate_state(double* stress, double* statev, const acst_model* model, const double* rotation);
 
-/* acst_rotate_state and then acst_update in one call, with their numbers: the state turned by
+/* acst_rotate_state and then acst_update in one call (a wrapper of acst_update_points with a
+ * rotation), with their numbers: the state turned by
  * rotation, then updated over dstrain (given in the turned frame). It fails wherever the two calls
  * fail: a turned state that acst_rotate_state refuses and acst_update alone would take (a sand
  * state with a tensile mean stress, a state variable that is not a number) is
@@ -162,7 +213,8 @@ acst_status acst_rotate_state(double* stress, double* statev, const acst_model* 
 acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
                                 const acst_model* model, const double* rotation, const double* dstrain);
 
-/* acst_update_rotated over n points: point i's stress, statev, rotation (9 doubles, row-major)
+/* acst_update_rotated over n points (a wrapper of acst_update_points with rotation_stride 9 and
+ * dstrain_stride 6): point i's stress, statev, rotation (9 doubles, row-major)
  * and dstrain at stress + i stress_stride, statev + i statev_stride, rotation + 9 i and
  * dstrain + 6 i. Every point's numbers are acst_update_rotated's on it, to the last bit: the sand
  * kinds update several points at once in SIMD registers where a point's update is the common
@@ -193,7 +245,8 @@ int acst_nonlocal_size(const acst_model* model);
 const char* acst_nonlocal_name(const acst_model* model, int i);
 acst_status acst_nonlocal_local(double* local, const acst_model* model, const double* stress, const double* statev);
 
-/* acst_update, acst_update_rotated and acst_update_rotated_batch with each point's offsets:
+/* acst_update, acst_update_rotated and acst_update_rotated_batch with each point's offsets
+ * (wrappers of acst_update_points with offset):
  * acst_nonlocal_size doubles a point (point i's at offset + i acst_nonlocal_size in the batch),
  * each finite and smaller than 2.97 in size (else ACST_INVALID_INPUT). offset NULL, or offsets of
  * zero, give the local functions' numbers to the last bit; everything else is as there. */

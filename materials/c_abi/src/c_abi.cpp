@@ -16,18 +16,22 @@
 
 struct acst_model {
   std::unique_ptr<const acst::abi::ModelKind> kind;
+  // The kind's sizes, read once at creation: every update asks for them, and each is a virtual
+  // call (with the one update's view, a one-point update asked four times).
+  int state_size;
+  int nonlocal_size;
 };
 
 using namespace acst::abi;
 
 namespace {
 
-int state_size_of(const acst_model& model) { return model.kind->state().size; }
+int state_size_of(const acst_model& model) { return model.state_size; }
 
 // |Q Q^T - I| < 1e-8 as its square, so no square root on the MPM hosts' hot path; Q Q^T is
 // symmetric, so its six distinct entries are the rows' dot products, and det Q is the rows'
 // triple product (written out on the row-major array: Eigen's general product and determinant
-// took 2.7 % of an MPM step, bench/RESULTS.md 1s).
+// took 2.7 % of an MPM step).
 bool proper_rotation(const double* r) {
   // A turn about axis 3, [[c, s, 0], [-s, c, 0], [0, 0, 1]] (every rotation of a plane-strain
   // host), first: for it the rule below is exactly 2 a^2 < 1e-16 with a = c c + s s - 1 and
@@ -58,7 +62,7 @@ bool proper_rotation(const double* r) {
 // The offsets' rule (acst.h, "Nonlocal regularisation"), "" where they may be taken.
 std::string offset_problem(const acst_model& model, const double* offset) {
   if (!offset) return "";
-  for (int k = 0; k < model.kind->nonlocal_size(); ++k)
+  for (int k = 0; k < model.nonlocal_size; ++k)
     if (!(std::abs(offset[k]) < acst::void_ratio_limit))
       return "the nonlocal offset " + std::to_string(offset[k]) + " (value " + std::to_string(k) +
              ") is not finite or not smaller than " + std::to_string(acst::void_ratio_limit) + " in size";
@@ -68,8 +72,15 @@ std::string offset_problem(const acst_model& model, const double* offset) {
 // Whether n points `stride` doubles apart, each `width` doubles wide, fit in an array a host can
 // hold (its size in bytes within ptrdiff_t). A stride checked only from below let one that wraps
 // size_t through (a negative stride passed as size_t): the batch wrote before the caller's array.
+// With 64-bit sizes, counts, strides and widths below 2^20, 2^32 and 2^32 (every host's) reach
+// less than 2^53 doubles and need no division: an update checks several spans per call, and an MPM
+// host calls it for every 16 particles.
 bool span_fits(size_t n, size_t stride, size_t width) {
   if (n == 0) return true;
+  constexpr uint64_t one = 1;
+  if (sizeof(size_t) >= 8 && uint64_t{n} < (one << 20) && uint64_t{stride} < (one << 32) &&
+      uint64_t{width} < (one << 32))
+    return true;
   const size_t most = static_cast<size_t>(PTRDIFF_MAX) / sizeof(double);
   return width <= most && n - 1 <= (most - width) / std::max<size_t>(stride, 1);
 }
@@ -108,7 +119,9 @@ acst_status acst_model_create(acst_model** model, const char* json_text) {
   *model = nullptr;
   ACST_REQUIRE(json_text, "acst_model_create: JSON text is NULL");
   ACST_GUARD({
-    *model = new acst_model{make_model_kind(json_text)};
+    std::unique_ptr<const ModelKind> kind = make_model_kind(json_text);
+    const int state_size = kind->state().size, nonlocal_size = kind->nonlocal_size();
+    *model = new acst_model{std::move(kind), state_size, nonlocal_size};
     return ok_status();
   })
 }
@@ -149,6 +162,291 @@ acst_status acst_void_ratio_from_relative_density(double* void_ratio, const acst
   ACST_GUARD({ return model->kind->void_ratio_from_relative_density(void_ratio, relative_density); })
 }
 
+}  // extern "C"
+
+namespace {
+
+// Who called the one update, acst_update_points or one of its wrappers: the names its messages
+// start with (each wrapper's messages are what they were) and how its points' own inputs are
+// judged. A one-point function (acst_update, acst_update_rotated and their _nonlocal forms)
+// refuses a point's bad rotation or offsets as the whole call, writing nothing, with a message
+// that names no point; a batch fails that point alone.
+struct Caller {
+  const char* name;           // of the call's own messages (NULL pointers, strides, rotations)
+  const char* nonlocal_name;  // of the offsets' messages
+  bool one_point;
+  bool rotation_required;     // acst_update_rotated*: a NULL rotation is a NULL pointer, not "no turn"
+};
+
+// Point i's array, `stride` doubles after point i - 1's; null where the array is absent.
+template <class T>
+T* point_at(T* base, size_t stride, size_t i) {
+  return base ? base + i * stride : nullptr;
+}
+
+// Whether n objects of `bytes` each fit in an array a host can hold (span_fits for the int and
+// counter arrays, which are not strided).
+bool count_fits(size_t n, size_t bytes) { return n <= static_cast<size_t>(PTRDIFF_MAX) / bytes; }
+
+// The sizes of a model's points (acst_model keeps them).
+struct Sizes {
+  size_t state, offsets;
+};
+
+// The arrays of a view with their strides and widths, in the order their checks name them.
+struct Array {
+  const char* what;
+  bool present;
+  size_t stride, width;
+};
+
+// Written out rather than as a table of Arrays: an MPM host checks a view for every 16 particles.
+bool strides_usable(const acst_batch& b, const Sizes& z, const double* offsets) {
+  return b.stress_stride >= 6 && b.statev_stride >= z.state && b.dstrain_stride >= 6 &&
+         (!b.rotation || b.rotation_stride >= 9) && (!offsets || b.offset_stride >= z.offsets) &&
+         (!b.tangent || b.tangent_stride >= 36);
+}
+
+bool spans_fit(const acst_batch& b, const Sizes& z, const double* offsets) {
+  const size_t n = b.n;
+  return span_fits(n, b.stress_stride, 6) && span_fits(n, b.statev_stride, z.state) &&
+         span_fits(n, b.dstrain_stride, 6) && (!b.rotation || span_fits(n, b.rotation_stride, 9)) &&
+         (!offsets || span_fits(n, b.offset_stride, z.offsets)) && (!b.tangent || span_fits(n, b.tangent_stride, 36)) &&
+         (!b.point_status || count_fits(n, sizeof(int))) && (!b.point_counters || count_fits(n, sizeof(acst_counters)));
+}
+
+// Which stride is short (strides_usable false).
+std::string short_stride(const acst_batch& b, const Sizes& z, const double* offsets) {
+  const Array arrays[] = {{"stress", true, b.stress_stride, 6},
+                          {"statev", true, b.statev_stride, z.state},
+                          {"dstrain", true, b.dstrain_stride, 6},
+                          {"rotation", b.rotation != nullptr, b.rotation_stride, 9},
+                          {"offset", offsets != nullptr, b.offset_stride, z.offsets},
+                          {"tangent", b.tangent != nullptr, b.tangent_stride, 36}};
+  for (const Array& a : arrays)
+    if (a.present && a.stride < a.width)
+      return std::string("the ") + a.what + " stride " + std::to_string(a.stride) + " is below a point's " +
+             std::to_string(a.width) + " doubles (strides must be at least 6 (stress, strain), acst_state_size "
+             "(state), 9 (rotation), acst_nonlocal_size (offset) and 36 (tangent))";
+  return "a stride is too short";
+}
+
+// The checks of the whole call, before any point is touched: whether the points may be attempted
+// (view_usable) and, where not, why (view_problem). `offsets`: the view's offsets where the kind
+// takes any, else null (not read).
+bool pointers_given(const acst_batch& b, const Sizes& z, const Caller& c) {
+  return !(c.one_point || b.n > 0) ||
+         (b.stress && b.dstrain && (b.statev || z.state == 0) && (b.rotation || !c.rotation_required));
+}
+
+// A one-point function's view is its own (one_point_view): one point, at strides that hold it.
+bool view_usable(const acst_batch& b, const Sizes& z, const double* offsets, const Caller& c) {
+  return pointers_given(b, z, c) &&
+         (b.n == 0 || c.one_point || (strides_usable(b, z, offsets) && spans_fit(b, z, offsets)));
+}
+
+std::string view_problem(const acst_batch& b, const Sizes& z, const double* offsets, const Caller& c) {
+  if (!pointers_given(b, z, c)) return c.one_point ? "a required pointer argument is NULL" : "a required pointer is NULL";
+  if (!strides_usable(b, z, offsets)) return short_stride(b, z, offsets);
+  return ACST_SPAN_RULE;
+}
+
+// Whether a point's offsets may be taken (offset_problem's rule, without its message).
+bool offsets_usable(const double* offset, size_t count) {
+  bool usable = true;
+  for (size_t k = 0; k < count; ++k) usable = usable && std::abs(offset[k]) < acst::void_ratio_limit;
+  return usable;
+}
+
+// What is wrong with a point's own inputs, its rotation and then its offsets; "" where they may
+// be taken (offsets are checked only where given: the local model's points pay nothing here).
+std::string point_input_problem(const acst_model& model, const double* rotation, const double* offset,
+                                const Caller& c) {
+  if (rotation && !proper_rotation(rotation)) return std::string(c.name) + ": " ACST_ROTATION_RULE;
+  if (offset)
+    if (std::string p = offset_problem(model, offset); !p.empty()) return std::string(c.nonlocal_name) + ": " + p;
+  return "";
+}
+
+// Whether a point's own inputs may be taken: point_input_problem's "", without building strings.
+bool point_inputs_usable(const double* rotation, const double* offset, const Sizes& z) {
+  return (!rotation || proper_rotation(rotation)) && (!offset || offsets_usable(offset, z.offsets));
+}
+
+// One point's update, turned first where it has a rotation: acst_update_rotated_nonlocal's or
+// acst_update_nonlocal's numbers.
+acst_status update_one_point(const ModelKind& kind, double* stress, double* statev, double* tangent,
+                             const double* rotation, const double* dstrain, const double* offset,
+                             acst::integration::Report& rep) {
+  return rotation ? kind.update_rotated(stress, statev, tangent, rotation, dstrain, offset, rep)
+                  : kind.update(stress, statev, tangent, dstrain, offset, rep);
+}
+
+// A one-point function's update (the view holds one point).
+acst_status update_single(const acst_batch& b, const acst_model& model, const Sizes& z, const double* offset,
+                          const Caller& c) {
+  if (!point_inputs_usable(b.rotation, offset, z))
+    return make_status(ACST_INVALID_INPUT, point_input_problem(model, b.rotation, offset, c), 1.0);
+  acst::integration::Report rep;
+  const acst_status st = update_one_point(*model.kind, b.stress, b.statev, b.tangent, b.rotation, b.dstrain, offset, rep);
+  if (b.point_counters) copy_counters(rep, b.point_counters);
+  if (b.counters) copy_counters(rep, b.counters);
+  // A kind's OK is ok_status(); made here, it is built in the caller's status rather than
+  // copied there (272 bytes per call, mostly the empty message).
+  if (st.code == ACST_OK) return ok_status();
+  return st;
+}
+
+// A batch's update: in blocks of points whose own inputs may be taken, updated in place together
+// (with a rotation and no tangent, by the kind's update_rotated_points: the sand's SIMD lanes),
+// a failed point left as it came. Not inlined into update_points: its blocks' arrays would make
+// every one-point call clear a frame of 3 kB (a third more time per call of the elastic kind).
+__attribute__((noinline)) acst_status update_many(const acst_batch& b, const acst_model& model, const Sizes& z,
+                                                   const double* offsets, const Caller& c) {
+  const size_t n = b.n;
+  const bool together = b.rotation && !b.tangent;
+  constexpr int block = 16;
+  acst_status first = ok_status();
+  size_t first_point = n;
+  const auto note_failure = [&](size_t i, int code, const char* message, double factor) {
+    if (i >= first_point) return;
+    first_point = i;
+    first = make_status(code, "point " + std::to_string(i) + ": " + message, factor);
+  };
+  acst::integration::Counters total;
+  int plastic = 0;
+  for (size_t start = 0; start < n; start += block) {
+    const int m = static_cast<int>(std::min<size_t>(block, n - start));
+    double *s_ptr[block], *q_ptr[block], *t_ptr[block];
+    const double *r_ptr[block], *e_ptr[block], *o_ptr[block];
+    int index[block], codes[block];
+    acst::integration::Report reports[block];
+    int used = 0;
+    for (int k = 0; k < m; ++k) {
+      const size_t i = start + static_cast<size_t>(k);
+      const double* rotation = point_at(b.rotation, b.rotation_stride, i);
+      const double* offset = point_at(offsets, b.offset_stride, i);
+      if (!point_inputs_usable(rotation, offset, z)) {
+        if (b.point_status) b.point_status[i] = ACST_INVALID_INPUT;
+        if (b.point_counters) b.point_counters[i] = acst_counters{};
+        note_failure(i, ACST_INVALID_INPUT, point_input_problem(model, rotation, offset, c).c_str(), 1.0);
+        continue;
+      }
+      s_ptr[used] = b.stress + i * b.stress_stride;
+      q_ptr[used] = point_at(b.statev, b.statev_stride, i);
+      t_ptr[used] = point_at(b.tangent, b.tangent_stride, i);
+      r_ptr[used] = rotation;
+      e_ptr[used] = b.dstrain + i * b.dstrain_stride;
+      o_ptr[used] = offset;
+      index[used++] = k;
+    }
+    acst_status failure = ok_status();  // the block's first failed point's status
+    if (together) {
+      model.kind->update_rotated_points(used, s_ptr, q_ptr, r_ptr, e_ptr, offsets ? o_ptr : nullptr, codes, reports,
+                                        failure);
+    } else {
+      for (int u = 0; u < used; ++u) {
+        const acst_status st =
+            update_one_point(*model.kind, s_ptr[u], q_ptr[u], t_ptr[u], r_ptr[u], e_ptr[u], o_ptr[u], reports[u]);
+        codes[u] = st.code;
+        if (st.code != ACST_OK && failure.code == ACST_OK) failure = st;
+      }
+    }
+    bool failure_named = false;
+    for (int u = 0; u < used; ++u) {
+      const size_t i = start + static_cast<size_t>(index[u]);
+      if (b.point_status) b.point_status[i] = codes[u];
+      if (b.point_counters) copy_counters(reports[u], &b.point_counters[i]);
+      if (b.counters) {
+        total += reports[u].counters;
+        plastic += reports[u].plastic;
+      }
+      if (codes[u] != ACST_OK && !failure_named) {
+        failure_named = true;
+        note_failure(i, failure.code, failure.message, failure.suggested_step_factor);
+      }
+    }
+  }
+  if (b.counters) {
+    acst::integration::Report sum;
+    sum.counters = total;
+    copy_counters(sum, b.counters);
+    b.counters->plastic = plastic;
+  }
+  if (b.first_failure) *b.first_failure = first_point;
+  return first;
+}
+
+// acst_update_points and its wrappers: the whole call's checks, then the points.
+acst_status update_points(const acst_batch* view, const acst_model* model, const Caller& c) {
+  if (!view || !model)
+    return make_status(ACST_INVALID_INPUT,
+                       std::string(c.name) + (c.one_point ? ": a required pointer argument is NULL"
+                                                          : ": a required pointer is NULL"),
+                       1.0);
+  ACST_GUARD({
+    const Sizes z{static_cast<size_t>(model->state_size), static_cast<size_t>(model->nonlocal_size)};
+    const double* offsets = z.offsets > 0 ? view->offset : nullptr;  // a kind without any ignores them
+    if (!view_usable(*view, z, offsets, c))
+      return make_status(ACST_INVALID_INPUT, std::string(c.name) + ": " + view_problem(*view, z, offsets, c), 1.0);
+    return c.one_point ? update_single(*view, *model, z, offsets, c) : update_many(*view, *model, z, offsets, c);
+  })
+}
+
+// A one-point function's view (acst_update, acst_update_rotated and their _nonlocal forms).
+acst_batch one_point_view(double* stress, double* statev, double* tangent, acst_counters* counters,
+                          const acst_model* model, const double* rotation, const double* dstrain,
+                          const double* offset) {
+  acst_batch b{};
+  b.n = 1;
+  b.stress = stress;
+  b.stress_stride = 6;
+  b.statev = statev;
+  b.statev_stride = model ? static_cast<size_t>(model->state_size) : 0;
+  b.dstrain = dstrain;
+  b.dstrain_stride = 6;
+  b.rotation = rotation;
+  b.rotation_stride = 9;
+  b.offset = offset;
+  b.offset_stride = model ? static_cast<size_t>(model->nonlocal_size) : 0;
+  b.tangent = tangent;
+  b.tangent_stride = 36;
+  b.point_counters = counters;
+  return b;
+}
+
+constexpr Caller update_caller{"acst_update", "acst_update_nonlocal", true, false};
+constexpr Caller update_rotated_caller{"acst_update_rotated", "acst_update_rotated_nonlocal", true, true};
+constexpr Caller update_batch_caller{"acst_update_batch", "acst_update_batch", false, false};
+constexpr Caller update_rotated_batch_caller{"acst_update_rotated_batch", "acst_update_rotated_batch_nonlocal", false,
+                                             true};
+constexpr Caller update_points_caller{"acst_update_points", "acst_update_points", false, false};
+
+// The view of the old batch functions' common arguments.
+acst_batch batch_view(size_t n, double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                      int* point_status, const double* dstrain, size_t dstrain_stride) {
+  acst_batch b{};
+  b.n = n;
+  b.stress = stress;
+  b.stress_stride = stress_stride;
+  b.statev = statev;
+  b.statev_stride = statev_stride;
+  b.dstrain = dstrain;
+  b.dstrain_stride = dstrain_stride;
+  b.point_status = point_status;
+  return b;
+}
+
+}  // namespace
+
+extern "C" {
+
+acst_status acst_update_points(const acst_batch* points, const acst_model* model) {
+  return update_points(points, model, update_points_caller);
+}
+
+// The functions before acst_update_points, kept as thin wrappers: each fills a view.
+
 acst_status acst_update(double* stress, double* statev, double* tangent, acst_counters* counters,
                         const acst_model* model, const double* dstrain) {
   return acst_update_nonlocal(stress, statev, tangent, counters, model, dstrain, nullptr);
@@ -156,54 +454,48 @@ acst_status acst_update(double* stress, double* statev, double* tangent, acst_co
 
 acst_status acst_update_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
                                  const acst_model* model, const double* dstrain, const double* offset) {
-  ACST_REQUIRE(stress && model && dstrain && (statev || state_size_of(*model) == 0),
-               "acst_update: a required pointer argument is NULL");
-  ACST_GUARD({
-    if (const std::string p = offset_problem(*model, offset); !p.empty())
-      return make_status(ACST_INVALID_INPUT, "acst_update_nonlocal: " + p, 1.0);
-    acst::integration::Report rep;
-    const acst_status st = model->kind->update(stress, statev, tangent, dstrain, offset, rep);
-    if (counters) copy_counters(rep, counters);
-    // A kind's OK is ok_status(); made here, it is built in the caller's status rather than
-    // copied there (272 bytes per call, mostly the empty message).
-    if (st.code == ACST_OK) return ok_status();
-    return st;
-  })
+  const acst_batch b = one_point_view(stress, statev, tangent, counters, model, nullptr, dstrain, offset);
+  return update_points(&b, model, update_caller);
 }
 
 acst_status acst_update_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
                               int* point_status, acst_counters* counters, const acst_model* model, size_t n,
                               const double* dstrain, size_t dstrain_stride) {
-  ACST_REQUIRE(model, "acst_update_batch: a required pointer is NULL");
-  const size_t nstatv = static_cast<size_t>(state_size_of(*model));
-  ACST_REQUIRE(n == 0 || (stress && dstrain && (statev || nstatv == 0)),
-               "acst_update_batch: a required pointer is NULL");
-  ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv && dstrain_stride >= 6),
-               "acst_update_batch: strides must be at least 6 (stress, strain) and acst_state_size (state)");
-  ACST_REQUIRE(span_fits(n, stress_stride, 6) && span_fits(n, statev_stride, nstatv) && span_fits(n, dstrain_stride, 6),
-               "acst_update_batch: " ACST_SPAN_RULE);
-  ACST_GUARD({
-    acst_status first = ok_status();
-    acst::integration::Report rep;
-    acst::integration::Counters total;
-    int plastic = 0;
-    for (size_t i = 0; i < n; ++i) {
-      double* point_statev = statev ? statev + i * statev_stride : nullptr;
-      const acst_status st =
-          model->kind->update(stress + i * stress_stride, point_statev, nullptr, dstrain + i * dstrain_stride, nullptr, rep);
-      total += rep.counters;
-      plastic += rep.plastic;
-      if (point_status) point_status[i] = st.code;
-      if (st.code != ACST_OK && first.code == ACST_OK)
-        first = make_status(st.code, "point " + std::to_string(i) + ": " + st.message, st.suggested_step_factor);
-    }
-    if (counters) {
-      rep.counters = total;
-      copy_counters(rep, counters);
-      counters->plastic = plastic;
-    }
-    return first;
-  })
+  acst_batch b = batch_view(n, stress, stress_stride, statev, statev_stride, point_status, dstrain, dstrain_stride);
+  b.counters = counters;
+  return update_points(&b, model, update_batch_caller);
+}
+
+acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                const acst_model* model, const double* rotation, const double* dstrain) {
+  return acst_update_rotated_nonlocal(stress, statev, tangent, counters, model, rotation, dstrain, nullptr);
+}
+
+acst_status acst_update_rotated_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
+                                         const acst_model* model, const double* rotation, const double* dstrain,
+                                         const double* offset) {
+  const acst_batch b = one_point_view(stress, statev, tangent, counters, model, rotation, dstrain, offset);
+  return update_points(&b, model, update_rotated_caller);
+}
+
+acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                                      int* point_status, acst_counters* point_counters, const acst_model* model,
+                                      size_t n, const double* rotation, const double* dstrain) {
+  return acst_update_rotated_batch_nonlocal(stress, stress_stride, statev, statev_stride, point_status, point_counters,
+                                            model, n, rotation, dstrain, nullptr);
+}
+
+acst_status acst_update_rotated_batch_nonlocal(double* stress, size_t stress_stride, double* statev,
+                                               size_t statev_stride, int* point_status, acst_counters* point_counters,
+                                               const acst_model* model, size_t n, const double* rotation,
+                                               const double* dstrain, const double* offset) {
+  acst_batch b = batch_view(n, stress, stress_stride, statev, statev_stride, point_status, dstrain, 6);
+  b.rotation = rotation;
+  b.rotation_stride = 9;
+  b.offset = offset;
+  b.offset_stride = model ? static_cast<size_t>(model->nonlocal_size) : 0;
+  b.point_counters = point_counters;
+  return update_points(&b, model, update_rotated_batch_caller);
 }
 
 acst_status acst_wave_speed(double* speed, const acst_model* model, const double* stress, const double* statev,
@@ -260,109 +552,6 @@ acst_status acst_rotate_state(double* stress, double* statev, const acst_model* 
   return ok_status();
 }
 
-acst_status acst_update_rotated(double* stress, double* statev, double* tangent, acst_counters* counters,
-                                const acst_model* model, const double* rotation, const double* dstrain) {
-  return acst_update_rotated_nonlocal(stress, statev, tangent, counters, model, rotation, dstrain, nullptr);
-}
-
-acst_status acst_update_rotated_nonlocal(double* stress, double* statev, double* tangent, acst_counters* counters,
-                                         const acst_model* model, const double* rotation, const double* dstrain,
-                                         const double* offset) {
-  ACST_REQUIRE(stress && model && rotation && dstrain && (statev || state_size_of(*model) == 0),
-               "acst_update_rotated: a required pointer argument is NULL");
-  ACST_REQUIRE(proper_rotation(rotation), "acst_update_rotated: " ACST_ROTATION_RULE);
-  ACST_GUARD({
-    if (const std::string p = offset_problem(*model, offset); !p.empty())
-      return make_status(ACST_INVALID_INPUT, "acst_update_rotated_nonlocal: " + p, 1.0);
-    acst::integration::Report rep;
-    const acst_status st = model->kind->update_rotated(stress, statev, tangent, rotation, dstrain, offset, rep);
-    if (counters) copy_counters(rep, counters);
-    if (st.code == ACST_OK) return ok_status();  // built in the caller's status (acst_update)
-    return st;
-  })
-}
-
-acst_status acst_update_rotated_batch(double* stress, size_t stress_stride, double* statev, size_t statev_stride,
-                                      int* point_status, acst_counters* point_counters, const acst_model* model,
-                                      size_t n, const double* rotation, const double* dstrain) {
-  return acst_update_rotated_batch_nonlocal(stress, stress_stride, statev, statev_stride, point_status, point_counters,
-                                            model, n, rotation, dstrain, nullptr);
-}
-
-acst_status acst_update_rotated_batch_nonlocal(double* stress, size_t stress_stride, double* statev,
-                                               size_t statev_stride, int* point_status, acst_counters* point_counters,
-                                               const acst_model* model, size_t n, const double* rotation,
-                                               const double* dstrain, const double* offset) {
-  ACST_REQUIRE(model, "acst_update_rotated_batch: a required pointer is NULL");
-  const size_t nstatv = static_cast<size_t>(state_size_of(*model));
-  ACST_REQUIRE(n == 0 || (stress && rotation && dstrain && (statev || nstatv == 0)),
-               "acst_update_rotated_batch: a required pointer is NULL");
-  ACST_REQUIRE(n == 0 || (stress_stride >= 6 && statev_stride >= nstatv),
-               "acst_update_rotated_batch: strides must be at least 6 (stress) and acst_state_size (state)");
-  const size_t per_point_offsets = static_cast<size_t>(model->kind->nonlocal_size());
-  ACST_REQUIRE(span_fits(n, stress_stride, 6) && span_fits(n, statev_stride, nstatv) && span_fits(n, 9, 9) &&
-                   span_fits(n, per_point_offsets, per_point_offsets) && span_fits(n, sizeof(acst_counters), sizeof(acst_counters)),
-               "acst_update_rotated_batch: " ACST_SPAN_RULE);
-  ACST_GUARD({
-    const size_t per_point = static_cast<size_t>(model->kind->nonlocal_size());
-    // In blocks of points with a proper rotation and usable offsets, updated in place together
-    // (a failed point stays as it came).
-    constexpr int block = 16;
-    acst_status first = ok_status();
-    size_t first_point = n;
-    const auto note_failure = [&](size_t i, int code, const char* message, double factor) {
-      if (i >= first_point) return;
-      first_point = i;
-      first = make_status(code, "point " + std::to_string(i) + ": " + message, factor);
-    };
-    for (size_t start = 0; start < n; start += block) {
-      const int m = static_cast<int>(std::min<size_t>(block, n - start));
-      double *s_ptr[block], *q_ptr[block];
-      const double *r_ptr[block], *e_ptr[block], *o_ptr[block];
-      int index[block], codes[block];
-      acst::integration::Report reports[block];
-      int used = 0;
-      for (int k = 0; k < m; ++k) {
-        const size_t i = start + static_cast<size_t>(k);
-        if (!proper_rotation(rotation + 9 * i)) {
-          if (point_status) point_status[i] = ACST_INVALID_INPUT;
-          if (point_counters) point_counters[i] = acst_counters{};
-          note_failure(i, ACST_INVALID_INPUT, "acst_update_rotated_batch: " ACST_ROTATION_RULE, 1.0);
-          continue;
-        }
-        const double* point_offset = offset && per_point > 0 ? offset + per_point * i : nullptr;
-        // Checked only where given: the local model's points (no offsets) pay nothing here.
-        if (const std::string p = point_offset ? offset_problem(*model, point_offset) : std::string(); !p.empty()) {
-          if (point_status) point_status[i] = ACST_INVALID_INPUT;
-          if (point_counters) point_counters[i] = acst_counters{};
-          note_failure(i, ACST_INVALID_INPUT, ("acst_update_rotated_batch_nonlocal: " + p).c_str(), 1.0);
-          continue;
-        }
-        o_ptr[used] = point_offset;
-        s_ptr[used] = stress + i * stress_stride;
-        q_ptr[used] = statev ? statev + i * statev_stride : nullptr;
-        r_ptr[used] = rotation + 9 * i;
-        e_ptr[used] = dstrain + 6 * i;
-        index[used++] = k;
-      }
-      acst_status failure = ok_status();
-      model->kind->update_rotated_points(used, s_ptr, q_ptr, r_ptr, e_ptr, offset ? o_ptr : nullptr, codes, reports,
-                                         failure);
-      bool failure_named = false;  // `failure` is the block's first failed point's status
-      for (int u = 0; u < used; ++u) {
-        const size_t i = start + static_cast<size_t>(index[u]);
-        if (point_status) point_status[i] = codes[u];
-        if (point_counters) copy_counters(reports[u], &point_counters[i]);
-        if (codes[u] != ACST_OK && !failure_named) {
-          failure_named = true;
-          note_failure(i, failure.code, failure.message, failure.suggested_step_factor);
-        }
-      }
-    }
-    return first;
-  })
-}
-
 acst_status acst_reproducer(char* buffer, size_t* length, const acst_model* model, const double* stress,
                             const double* statev, const double* dstrain) {
   return acst_reproducer_nonlocal(buffer, length, model, stress, statev, dstrain, nullptr);
@@ -380,10 +569,10 @@ acst_status acst_reproducer_nonlocal(char* buffer, size_t* length, const acst_mo
   })
 }
 
-int acst_nonlocal_size(const acst_model* model) { return model ? model->kind->nonlocal_size() : 0; }
+int acst_nonlocal_size(const acst_model* model) { return model ? model->nonlocal_size : 0; }
 
 const char* acst_nonlocal_name(const acst_model* model, int i) {
-  return model && i >= 0 && i < model->kind->nonlocal_size() ? model->kind->nonlocal_name(i) : nullptr;
+  return model && i >= 0 && i < model->nonlocal_size ? model->kind->nonlocal_name(i) : nullptr;
 }
 
 acst_status acst_nonlocal_local(double* local, const acst_model* model, const double* stress, const double* statev) {

@@ -86,7 +86,7 @@ class SandKind final : public ModelKind {
 
   // Up to UpdateLanes::width points at a time in SIMD lanes (acst/update_lanes.hpp), each turned
   // straight into its lane and a done lane's result written straight back (through a State and
-  // Eigen temporaries, the copies stalled on store forwarding: bench/RESULTS.md 1aa); the points
+  // Eigen temporaries, the copies stalled on store forwarding); the points
   // the lanes leave go through update_rotated. The lanes' numbers are update_point's after
   // rotated_copy's turn, so every point's are.
   void update_rotated_points(int m, double* const* stress, double* const* statev, const double* const* r,

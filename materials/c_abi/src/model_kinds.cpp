@@ -61,7 +61,7 @@ acst_status ModelKind::update_rotated(double* stress, double* statev, double* ta
   // The rotated copies go straight to the update, whose entry checks refuse what is not finite
   // or not physical and whose OK vouches for what it returns: the rotated state is never handed
   // out, so acst_rotate_state's whole check of it and its copies back are not needed (with them,
-  // 3-4 % of an MPM step, bench/RESULTS.md 1s); only what the update would take and the rotation
+  // 3-4 % of an MPM step); only what the update would take and the rotation
   // refuses is checked, so that the answer is that of the two calls, as are the numbers.
   double s[6], q[ACST_NSTATV];
   rotated_copy(stress, statev, r, s, q);

@@ -213,7 +213,7 @@ class AcstRates {
   const Parameters& prm_;
   double void_ratio_offset_;
   // The start state's stress ratio state is wanted twice in a plastic update, by the unloading
-  // test of the elastic fraction and by the first rate (bench/RESULTS.md section 1, proposal 2):
+  // test of the elastic fraction and by the first rate:
   // the last one is kept with the stress and strain direction it was computed for.
   mutable StressRatioState last_ratio_{};
   mutable Sym last_sigma_ = Sym::Constant(std::numeric_limits<double>::quiet_NaN());  // NaN: equal to nothing

@@ -44,7 +44,7 @@ ACST_INLINE LodeInterpolation lode_interpolation(double c, double sin3theta) {
 // continued by reflection across the meridians, so g is C2 there, not analytic: dg/ds has a
 // sqrt(1 + s) term at compression.
 // Out of line (src/lode.cpp): inlined, its acos and cos slowed every update with Li's form by
-// 4-11 % (bench/RESULTS.md section 1j).
+// 4-11 %.
 LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
 
 // The same for the unit deviator u = scale a whose sin 3theta is sin3theta, with x taken from
@@ -52,7 +52,7 @@ LodeInterpolation willam_warnke_interpolation(double c, double sin3theta);
 // -sqrt(3/2) u as its roots, and acos(s)/3 in [0, pi/3] picks the largest, so x = -sqrt(3/2)
 // min eig(u). With shear in the 1-2 plane only (a_12 != 0, a_13 = a_23 = 0: an MPM host's
 // states) that eigenvalue costs one square root instead of acos and cos, a tenth of a footing's
-// time (bench/RESULTS.md 1q), and is the more accurate near the meridians, where acos(s) of an s
+// time, and is the more accurate near the meridians, where acos(s) of an s
 // rounded near -1 puts theta 1e-8 off. Other states take x from s as before: among them are the
 // element tests' diagonal states, which the delivered sets were fitted with, and the fit follows
 // even round-off changes of their results to another set (0.4 standard errors away, measured;

@@ -1,6 +1,6 @@
 #pragma once
 // Several points' stress updates at once, lane by lane in SIMD registers, for the two updates an
-// MPM host asks for most (bench/RESULTS.md 1z): a start on the yield surface loaded outwards with
+// MPM host asks for most (measured on the Kimura footing): a start on the yield surface loaded outwards with
 // one modified-Euler substep accepted, and an elastic increment that one Heun step integrates. Each lane computes, operation for operation, what
 // Material::update computes for its point, so a lane's result is the same to the last bit
 // (tests/materials/update_lanes_test.cpp); a lane whose update takes any other route (a crossing of the

@@ -35,8 +35,8 @@ ACST_INLINE double yield_function(double R, double g, double H) { return R / g -
 
 // The stress's part of the yield value, without the loading direction (the cheap check of every
 // elastic trial): with d = dev(sigma) (into d), R = sqrt(3/2) |d|/|p| and r_hat = sign(p) d/|d|,
-// so sin 3theta = sign(p) (-3 sqrt(6) det(d) / |d|^3) needs no tensor division (bench/RESULTS.md
-// 1); `scale` = sign(p)/|d| makes r_hat of d for the Lode function. sin3theta (clamped to
+// so sin 3theta = sign(p) (-3 sqrt(6) det(d) / |d|^3) needs no tensor division;
+// `scale` = sign(p)/|d| makes r_hat of d for the Lode function. sin3theta (clamped to
 // [-1, 1]) and scale mean something only where R is not below R_tolerance.
 struct YieldInvariants {
   double R, sin3theta, scale;
@@ -60,7 +60,7 @@ inline double yield_value(const Sym& sigma, const LodeShape& c, double R_toleran
 }
 
 // r = s/p into r, by p's reciprocal: a tensor divided by a scalar is six divisions in a serial
-// chain of them, the cost of the ratio state (bench/RESULTS.md section 1, proposal 4).
+// chain of them, which was the cost of the ratio state.
 // Returns |r|.
 ACST_INLINE double stress_ratio(const double* sigma, double* r) {
   deviator(sigma, r);

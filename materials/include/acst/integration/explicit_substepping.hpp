@@ -21,6 +21,7 @@
 #include "acst/integration/embedded_runge_kutta.hpp"
 #include "acst/integration/options.hpp"
 #include "acst/integration/report.hpp"
+#include "acst/integration/steps.hpp"
 #include "acst/tensor.hpp"
 
 namespace acst::integration {
@@ -29,6 +30,7 @@ template <class Model>
 class ExplicitSubstepping {
  public:
   using Vector = typename Model::Vector;
+  static constexpr int size = Vector::RowsAtCompileTime;  // the steps (steps.hpp) work on its numbers
 
   ExplicitSubstepping(const Model& model, const Options& opt) : model_(model), opt_(opt) {}
 
@@ -40,7 +42,7 @@ class ExplicitSubstepping {
     model_.elastic_rate(y, deps, k1, rep.counters);
     const double f0 = model_.yield_value(y, H, deps);
     // A start on the surface loaded outwards is plastic from its start: the elastic trial would
-    // only be thrown away (bench/RESULTS.md section 1, proposal 6). A neutral increment (cosine
+    // only be thrown away. A neutral increment (cosine
     // within ltol of 0) is elastic if its trial stays on the surface.
     const bool on_surface = f0 >= -opt_.ftol;
     const double cosine = on_surface ? model_.unloading_cosine(y, k1, deps) : -1.0;
@@ -75,12 +77,13 @@ class ExplicitSubstepping {
   }
 
   // Heun's two-stage secant step over the fraction h of deps (pressure-dependent elasticity),
-  // from the rate k1 at y.
+  // from the rate k1 at y (steps.hpp, as the lanes take it).
   ElasticStep heun_step(const Vector& y, const Vector& k1, const Sym& deps, double h, Counters& c) const {
-    Vector k2;
-    model_.elastic_rate(y + h * k1, deps, k2, c);
-    const Vector y_new = y + (0.5 * h) * (k1 + k2);
-    const double error = model_.relative_error(y_new, (0.5 * h) * (k2 - k1));
+    Vector ys, k2, y_new, err;
+    euler_predictor<size>(y.data(), k1.data(), h, ys.data());
+    model_.elastic_rate(ys, deps, k2, c);
+    heun_combination<size>(y.data(), k1.data(), k2.data(), h, y_new.data(), err.data());
+    const double error = model_.relative_error(y_new, err);
     // NaN would pass every "error > STOL" test: no estimate counts as too large an error.
     return {y_new, std::isfinite(error) ? std::max(error, 1e-16) : std::numeric_limits<double>::infinity()};
   }
@@ -199,6 +202,7 @@ class ExplicitSubstepping {
     double capped_ratio = 1.01;
     for (int i = 0; i <= tb.error_order; ++i) capped_ratio *= 1.1 / 0.9;
     std::array<Vector, 7> k;
+    const auto stage_rates = [&k](int s, int i) { return k[s][i]; };  // for the steps (steps.hpp)
     Counters& c = rep.counters;
     double T = 0.0;
     // dT_next: the natural substep size; h: the one tried (cut to reach T = 1 exactly).
@@ -220,16 +224,17 @@ class ExplicitSubstepping {
         k0_valid = true;
       }
       for (int s = 1; s < tb.stages && r == Reason::none; ++s) {
-        Vector ys = y;
-        for (int j = 0; j < s; ++j) ys += (h * tb.a[s][j]) * k[j];
+        Vector ys;
+        stage_state<size>(tb, s, h, y.data(), stage_rates, ys.data());
         r = rate(ys, deps, k[s], c);
       }
-      Vector y_new = y, err = Vector::Zero();
+      Vector y_new, err;
       if (r == Reason::none) {
-        for (int s = 0; s < tb.stages; ++s) {
-          y_new += (h * tb.b[s]) * k[s];
-          err += (h * (tb.b[s] - tb.b_low[s])) * k[s];
-        }
+        // A two-stage scheme's count (modified Euler, the default) as a constant (steps.hpp).
+        if (tb.stages == modified_euler_tableau.stages)
+          step_solution<size, modified_euler_tableau.stages>(tb, h, y.data(), stage_rates, y_new.data(), err.data());
+        else
+          step_solution<size>(tb, h, y.data(), stage_rates, y_new.data(), err.data());
         r = model_.admissibility(y_new);
       }
       if (r != Reason::none) {  // a stage left the admissible region: shrink hard
@@ -249,7 +254,7 @@ class ExplicitSubstepping {
       }
       const double R = std::max(measured, 1e-16);
       // pow, not sqrt, for ME's exponent 1/2: the two differ in the last bit at times, and the
-      // calibration follows that to another set (bench/RESULTS.md 1q).
+      // calibration follows that to another set.
       const double factor = R * capped_ratio <= opt_.stol ? 1.1 : 0.9 * std::pow(opt_.stol / R, exponent);
       if (R > opt_.stol) {
         ++c.substeps_rejected;
