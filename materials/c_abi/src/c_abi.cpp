@@ -239,6 +239,22 @@ bool pointers_given(const acst_batch& b, const Sizes& z, const Caller& c) {
          (b.stress && b.dstrain && (b.statev || z.state == 0) && (b.rotation || !c.rotation_required));
 }
 
+// The view of the old batch functions' common arguments.
+acst_batch batch_view(size_t n, double* stress, size_t stress_stride, double* statev, size_t statev_stride,
+                      int* point_status, const double* dstrain, size_t dstrain_stride) {
+  acst_batch b{};
+  b.n = n;
+  b.stress = stress;
+  b.stress_stride = stress_stride;
+  b.statev = statev;
+  b.statev_stride = statev_stride;
+  b.dstrain = dstrain;
+  b.dstrain_stride = dstrain_stride;
+  b.point_status = point_status;
+  return b;
+}
+
+
 // A one-point function's view is its own (one_point_view): one point, at strides that hold it.
 bool view_usable(const acst_batch& b, const Sizes& z, const double* offsets, const Caller& c) {
   return pointers_given(b, z, c) &&
@@ -397,14 +413,8 @@ acst_status update_points(const acst_batch* view, const acst_model* model, const
 acst_batch one_point_view(double* stress, double* statev, double* tangent, acst_counters* counters,
                           const acst_model* model, const double* rotation, const double* dstrain,
                           const double* offset) {
-  acst_batch b{};
-  b.n = 1;
-  b.stress = stress;
-  b.stress_stride = 6;
-  b.statev = statev;
-  b.statev_stride = model ? static_cast<size_t>(model->state_size) : 0;
-  b.dstrain = dstrain;
-  b.dstrain_stride = 6;
+  acst_batch b = batch_view(1, stress, 6, statev, model ? static_cast<size_t>(model->state_size) : 0, nullptr,
+                            dstrain, 6);
   b.rotation = rotation;
   b.rotation_stride = 9;
   b.offset = offset;
@@ -421,21 +431,6 @@ constexpr Caller update_batch_caller{"acst_update_batch", "acst_update_batch", f
 constexpr Caller update_rotated_batch_caller{"acst_update_rotated_batch", "acst_update_rotated_batch_nonlocal", false,
                                              true};
 constexpr Caller update_points_caller{"acst_update_points", "acst_update_points", false, false};
-
-// The view of the old batch functions' common arguments.
-acst_batch batch_view(size_t n, double* stress, size_t stress_stride, double* statev, size_t statev_stride,
-                      int* point_status, const double* dstrain, size_t dstrain_stride) {
-  acst_batch b{};
-  b.n = n;
-  b.stress = stress;
-  b.stress_stride = stress_stride;
-  b.statev = statev;
-  b.statev_stride = statev_stride;
-  b.dstrain = dstrain;
-  b.dstrain_stride = dstrain_stride;
-  b.point_status = point_status;
-  return b;
-}
 
 }  // namespace
 

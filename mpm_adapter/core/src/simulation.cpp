@@ -208,27 +208,41 @@ void Simulation::xpic_velocity(int order) {
 // One step (docs/mpm.md, "One step"): the phases in their order; the stress is updated in two
 // halves (update-stress-average), or once before the internal force or after the re-map.
 void Simulation::step() {
+  PhaseClock phase(phase_seconds_);
   boundaries_.footing.at_time(clock_.time);
   regulariser_.regularise(particles_, materials_, clock_.step, work_.scatter.threads());
   rows_.follow(grid_, boundaries_.footing, clock_.step);
+  phase.lap(StepPhase::regularisation);
   refresh_time_step();
+  phase.lap(StepPhase::time_step);
   compute_shape_functions();
+  phase.lap(StepPhase::shape_functions);
   map_mass_and_momentum();
   micropolar_.map(particles_, work_, boundaries_.walls, grid_);
+  phase.lap(StepPhase::map_to_grid);
   apply_constraints();
+  phase.lap(StepPhase::constraints);
   fail_at(micropolar_.update_stress(particles_, work_, work_.vx.data(), work_.vy.data(), clock_.dt),
           "the micropolar stresses are not finite");
+  phase.lap(StepPhase::micropolar_stress);
   const StressUpdate when = settings_.stress_update;
   const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
   if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
+  phase.lap(StepPhase::stress_update);
   footing_contact();
+  phase.lap(StepPhase::footing_contact);
   internal_force_and_reactions();
+  phase.lap(StepPhase::internal_force);
   update_particles();
+  phase.lap(StepPhase::particle_update);
   if (when != StressUpdate::first) {
     remap_momentum();
+    phase.lap(StepPhase::remap);
     update_stress(work_.ux.data(), work_.uy.data(), part);  // with the re-mapped v
+    phase.lap(StepPhase::stress_update);
   }
   advance_boundaries();
+  phase.lap(StepPhase::advance);
 }
 
 void Simulation::refresh_time_step() {

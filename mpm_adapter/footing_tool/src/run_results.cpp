@@ -97,6 +97,8 @@ void write_results(const RunContext& run, RunSummary& sum) {
       contour_pair(run, "peak", "Q_ult (S/B = " + std::to_string(st.peak.S_over_B).substr(0, 5) + ")", st.peak);
   }
   const double B = run.B;
+  json phases = json::object();  // where the steps' time went (docs/mpm.md, "Outputs")
+  for (std::size_t k = 0; k < step_phase_count; ++k) phases[step_phase_names[k]] = run.sim.phase_seconds()[k];
   const json summary = {{"scene", scene.name},
                         {"particles", run.sim.particles().n},
                         {"steps", run.sim.step_count()},
@@ -104,6 +106,7 @@ void write_results(const RunContext& run, RunSummary& sum) {
                         {"wall_s", sum.wall_s},
                         {"threads", thread_count(scene.solver.threads)},
                         {"particle_steps_per_s", sum.particle_steps_per_s},
+                        {"step_phase_seconds", phases},
                         {"Q_ult_kN_per_m", sum.Q_ult},
                         {"q_ult_kPa", sum.Q_ult / B},
                         {"S_ult_m", sum.S_ult},

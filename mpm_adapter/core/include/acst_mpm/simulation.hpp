@@ -22,6 +22,7 @@
 #include "acst_mpm/regulariser.hpp"
 #include "acst_mpm/settings.hpp"
 #include "acst_mpm/simulation_error.hpp"
+#include "acst_mpm/step_phases.hpp"
 #include "acst_mpm/step_scratch.hpp"
 #include "acst_mpm/walls.hpp"
 
@@ -91,6 +92,8 @@ class Simulation {
   bool is_xpic_step(long long step) const;
   // The time step the next step would take (CFL on the wave speeds, and the contact springs).
   double stable_time_step() const;
+  // Wall seconds each phase of step() has taken in this process (a resumed run counts anew).
+  const StepPhaseSeconds& phase_seconds() const { return phase_seconds_; }
 
  private:
   // The steps of step(), in the order docs/mpm.md gives.
@@ -129,6 +132,7 @@ class Simulation {
   Clock clock_;
   std::array<Reaction, reaction_sets> reaction_{};
   StepScratch work_;  // owned: a copy of a Simulation has its own
+  StepPhaseSeconds phase_seconds_{};
 };
 
 }  // namespace acst::mpm
