@@ -48,15 +48,15 @@ def main():
                      f"{100 * two[phase] / total2:.1f}", f"{speedup:.2f}", f"{serial:.2f}"])
     rows.append(["all phases", f"{total1:.3f}", "100", f"{total2:.3f}", "100", f"{total1 / total2:.2f}",
                  f"{2.0 * total2 / total1 - 1.0:.2f}"])
-    write_table(os.path.join(a.out, "phases.csv"),
-                ["phase", "s_1_thread", "pct_1_thread", "s_2_threads", "pct_2_threads", "speedup", "serial_share"], rows)
+    fields = ["phase", "s_1_thread", "pct_1_thread", "s_2_threads", "pct_2_threads", "speedup", "serial_share"]
+    write_table(os.path.join(a.out, "phases.csv"), fields, [dict(zip(fields, r)) for r in rows])
     data = os.path.join(a.out, "phases.dat")
     with open(data, "w") as f:
         for r in rows[:-1]:
             f.write(f"{r[0]} {r[1]} {r[3]}\n")
     steps = summaries[1]["steps"]
     script = "\n".join([
-        "set terminal pngcairo size 1000,520", f"set output {gp_quoted(os.path.join(a.out, 'phases.png'))}",
+        "set terminal pngcairo size 1000,520 noenhanced", f"set output {gp_quoted(os.path.join(a.out, 'phases.png'))}",
         "set style data histogram", "set style histogram cluster gap 1", "set style fill solid 0.8 border -1",
         "set ylabel 'wall time, s'", "set xtics rotate by -30", "set key top right",
         f"set title 'Converged V85.6 to S/B {stop:g}: {steps} steps, {summaries[1]['particles']} particles; "

@@ -124,7 +124,7 @@ def summarise(a, folds, results):
     with open(os.path.join(a.out, "decision.json"), "w") as f:
         json.dump({"folds": folds, "candidates": summary, "decision": decision, "resamples": RESAMPLES, "seed": SEED}, f, indent=1)
     header = ["candidate"] + names + ["S", "S 5-95 %", "S - S(delivered) (5-95 %)"]
-    write_table(os.path.join(a.out, "decision.csv"), header, rows)
+    write_table(os.path.join(a.out, "decision.csv"), header, [dict(zip(header, r)) for r in rows])
     with open(os.path.join(a.out, "decision.md"), "w") as f:
         f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
         for r in rows:
@@ -141,7 +141,7 @@ def plot(a, names, E):
         for k, fold in enumerate(names):
             f.write(fold + " " + " ".join(f"{E[c][k]:.5f}" for c in CANDIDATES) + "\n")
     script = "\n".join([
-        "set terminal pngcairo size 1100,520", f"set output {gp_quoted(os.path.join(a.out, 'decision.png'))}",
+        "set terminal pngcairo size 1100,520 noenhanced", f"set output {gp_quoted(os.path.join(a.out, 'decision.png'))}",
         "set style data histogram", "set style histogram cluster gap 1", "set style fill solid 0.8 border -1",
         "set ylabel 'predicted RMS / range of the held-out fold'", "set key top left", "set xtics rotate by -20",
         "set title 'Decision rule: each candidate fitted without the fold, the fold predicted'",
