@@ -67,6 +67,13 @@ int GradedAxis::interval(double x) const {
   return static_cast<int>(std::upper_bound(knots_.begin(), knots_.end(), x) - knots_.begin()) - 1;
 }
 
+int GradedAxis::interval(double x, int hint) const {
+  const int last = static_cast<int>(knots_.size()) - 1;
+  for (int k : {hint, hint + 1, hint - 1})  // t_k <= x < t_{k+1}: upper_bound's answer, found locally
+    if (k >= 0 && k < last && knots_[k] <= x && x < knots_[k + 1]) return k;
+  return interval(x);
+}
+
 int GradedAxis::node_at(double x, double tolerance) const {
   const auto it = std::lower_bound(nodes_.begin(), nodes_.end(), x - tolerance);
   return it != nodes_.end() && std::fabs(*it - x) <= tolerance ? static_cast<int>(it - nodes_.begin()) : -1;
@@ -77,9 +84,9 @@ int GradedAxis::cell(double x) const {
   return std::clamp(i, 0, nodes() - 2);
 }
 
-double widest_domain(const GradedAxis& axis, double x) {
+double widest_domain(const GradedAxis& axis, double x, int hint) {
   const std::vector<double>& t = axis.knots();
-  const int k = axis.interval(x), last = static_cast<int>(t.size()) - 1;
+  const int k = axis.interval(x, hint), last = static_cast<int>(t.size()) - 1;
   if (k < 1 || k + 2 > last) return 0.0;
   // Within [t_{k-1}, t_{k+1}] or within [t_k, t_{k+2}]: whichever leaves the wider domain, a
   // rounding's width inside it (x - l would otherwise round onto the next interval: a run stopped).
@@ -87,10 +94,10 @@ double widest_domain(const GradedAxis& axis, double x) {
   return inside * std::max(std::min(x - t[k - 1], t[k + 1] - x), std::min(x - t[k], t[k + 2] - x));
 }
 
-bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out) {
+bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out, int hint) {
   const double* t = axis.knots().data();
   const double a = x - l, b = x + l;
-  const int ka = axis.interval(a), kb = axis.interval(b);
+  const int ka = axis.interval(a, hint), kb = axis.interval(b, hint);
   const int last = static_cast<int>(axis.knots().size()) - 2;  // the last interval
   // Interval k carries N_{k-2} .. N_k: the first two and the last two intervals lack a node.
   if (!(ka >= 2 && kb <= last - 2 && kb - ka <= 1)) return false;

@@ -42,11 +42,14 @@ long long ParticleWeights::compute_graded(const Grid& grid, const Particles& P, 
   parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
     GradedWeights ax, ay;
     const GradedAxis &gx = grid.graded_x, &gy = grid.graded_y;
+    // Where the particle's domain began the step before (its first node's interval is first + 2):
+    // the knot intervals are looked for there first, the same intervals found faster.
+    const int near_x = gx.interval(P.x[p], w.first_i[p] + 2), near_y = gy.interval(P.y[p], w.first_j[p] + 2);
     // A particle that moved onto smaller cells has its domain narrowed to cover two intervals (the
     // stencil's 4 nodes): the weights stay continuous in x, a sum of unity and linear-complete.
     if (!std::isfinite(P.x[p]) || !std::isfinite(P.y[p]) ||
-        !graded_weights(gx, P.x[p], std::min(domain_x_[p], widest_domain(gx, P.x[p])), ax) ||
-        !graded_weights(gy, P.y[p], std::min(domain_y_[p], widest_domain(gy, P.y[p])), ay)) {
+        !graded_weights(gx, P.x[p], std::min(domain_x_[p], widest_domain(gx, P.x[p], near_x)), ax, near_x) ||
+        !graded_weights(gy, P.y[p], std::min(domain_y_[p], widest_domain(gy, P.y[p], near_y)), ay, near_y)) {
       if (off_grid[t] < 0) off_grid[t] = static_cast<long long>(p);
       return;
     }

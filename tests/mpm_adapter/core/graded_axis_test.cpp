@@ -191,3 +191,21 @@ TEST(GradedAxis, AGrowthRatioJustAboveOneLaysOutAtOnce) {
   }
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
 }
+
+// The interval looked for at a hint first is the interval the knots' search gives, for every hint
+// (right, one off, far off, out of range) and every place (inside, on a knot, outside, NaN).
+TEST(GradedAxis, AHintedIntervalIsTheSearchedOne) {
+  const GradedAxis axis(graded_knots({0.0, 3}, {6.3, 3}, 3.15, 1.5, 4.8, Grading{0.045, 1.2, 0.18}));
+  const std::vector<double>& t = axis.knots();
+  std::vector<double> places = {-1.0, t.front(), t.back(), t.back() + 1.0, NAN, INFINITY, -INFINITY};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(t.front() - 0.1, t.back() + 0.1);
+  for (int k = 0; k < 2000; ++k) places.push_back(u(rng));
+  for (std::size_t k = 0; k < t.size(); k += 7) places.push_back(t[k]);
+  const int n = static_cast<int>(t.size());
+  for (double x : places) {
+    const int searched = axis.interval(x);
+    for (int hint : {searched, searched + 1, searched - 1, searched + 5, -1, -7, 0, n - 2, n - 1, n, n + 3})
+      EXPECT_EQ(axis.interval(x, hint), searched) << "x = " << x << ", hint " << hint;
+  }
+}

@@ -23,6 +23,9 @@ class GradedAxis {
   // The knot interval k with t_k <= x < t_{k+1}; -1 left of the first knot, the last interval's
   // index + 1 from the last knot on.
   int interval(double x) const;
+  // The same interval, looked for first at `hint` and its neighbours (a particle's interval of the
+  // step before): a search of the knots only where x has moved further.
+  int interval(double x, int hint) const;
   // The node within `tolerance` of x, or -1.
   int node_at(double x, double tolerance) const;
   // The node cell i with node(i) <= x < node(i + 1), clamped to the first and last cell.
@@ -43,10 +46,12 @@ struct GradedWeights {
 // The largest half-width of a domain at x that covers at most two knot intervals (the stencil's
 // 4 nodes): at least half the interval x lies in, so an evenly spaced axis never clips a domain of
 // up to half a cell.
-double widest_domain(const GradedAxis& axis, double x);
+// `hint`: where x was last (GradedAxis::interval); -1 for none.
+double widest_domain(const GradedAxis& axis, double x, int hint = -1);
 
 // False where the domain leaves the knots or covers more than two knot intervals.
-bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out);
+// `hint`: x's knot interval, or near it (GradedAxis::interval); -1 for none.
+bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& out, int hint = -1);
 
 // How an axis is graded (the scene's /grid/graded): cells of `fine` in a window, growing by at
 // most `growth` per cell toward the ends, up to about `largest`.
