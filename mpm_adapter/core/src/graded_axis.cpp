@@ -4,18 +4,25 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "acst_common/double_pair.hpp"
+
 namespace acst::mpm {
 namespace {
 
+using common::DoublePair;
+
 // The three quadratic B-splines N_{k-2}, N_{k-1}, N_k that are not zero on knot interval k, at x
-// (de Boor's triangle: degree 1 from the interval's ends, degree 2 from its neighbours').
+// (de Boor's triangle: degree 1 from the interval's ends, degree 2 from its neighbours'). The
+// weights are bound by the divider: its six divisions go two at a time (the same quotients).
 void splines_on_interval(const double* t, int k, double x, double out[3]) {
   const double a = t[k], b = t[k + 1];
-  const double left1 = (b - x) / (b - a), right1 = (x - a) / (b - a);  // N_{k-1,1}, N_{k,1}
   const double up = t[k + 2], down = t[k - 1];
-  out[0] = (b - x) / (b - down) * left1;
-  out[1] = (x - down) / (b - down) * left1 + (up - x) / (up - a) * right1;
-  out[2] = (x - a) / (up - a) * right1;
+  const DoublePair degree1 = DoublePair{b - x, x - a} / DoublePair{b - a, b - a};  // N_{k-1,1}, N_{k,1}
+  const DoublePair left = DoublePair{b - x, x - down} / DoublePair{b - down, b - down};
+  const DoublePair right = DoublePair{up - x, x - a} / DoublePair{up - a, up - a};
+  out[0] = left[0] * degree1[0];
+  out[1] = left[1] * degree1[0] + right[0] * degree1[1];
+  out[2] = right[1] * degree1[1];
 }
 
 // The intervals between a window's edge and an end node D further out, outward: cells growing
