@@ -30,8 +30,15 @@ namespace {
 constexpr int W = UpdateLanes::width;
 
 // The plastic route's scheme: one substep of modified Euler, whose stages and solution the steps
-// of the scalar integrator form (integration/steps.hpp).
-constexpr const integration::Tableau& me = integration::modified_euler_tableau;
+// of the scalar integrator form (integration/steps.hpp). Its coefficients copied here at compile
+// time, with internal linkage: a reference to the tableau would make this AVX2 object emit it
+// and std::array's accessors (acst/inline.hpp; lanes_kernel_symbols).
+constexpr int me_stages = integration::modified_euler_tableau.stages;
+constexpr double me_a1[1] = {integration::modified_euler_tableau.a[1][0]};
+constexpr double me_b[2] = {integration::modified_euler_tableau.b[0], integration::modified_euler_tableau.b[1]};
+constexpr double me_b_low[2] = {integration::modified_euler_tableau.b_low[0],
+                                integration::modified_euler_tableau.b_low[1]};
+static_assert(me_stages == 2);
 
 ACST_INLINE int finite(double x) { return std::abs(x) <= std::numeric_limits<double>::max(); }
 
@@ -265,7 +272,7 @@ void run(const Constants& k, UpdateLanes& L) {
     #pragma GCC unroll 13
     for (int i = 0; i < 13; ++i) k0[i][l] = dy[i];
     Vec ys;
-    integration::stage_state<13>(me, 1, 1.0, y.v, [&](int, int i) __attribute__((always_inline)) { return dy[i]; },
+    integration::stage_state<13>(me_a1, 1, 1.0, y.v, [&](int, int i) __attribute__((always_inline)) { return dy[i]; },
                                  ys.v);
     unusable |= !(mean_stress(ys.v) >= k.p.p_min);
     quantities_before_pow(k, ys.v, ratio_state<WW>(k, ys.v, unusable), end, l);
@@ -282,10 +289,10 @@ void run(const Constants& k, UpdateLanes& L) {
     // Stage j's rate: k0 (lane-minor) or k1.
     const auto rates = [&](int j, int i) __attribute__((always_inline)) { return j == 0 ? k0[i][l] : k1[i]; };
     Vec ys;
-    integration::stage_state<13>(me, 1, 1.0, y.v, rates, ys.v);
+    integration::stage_state<13>(me_a1, 1, 1.0, y.v, rates, ys.v);
     rate_after_pow(k, ys.v, deps, end, l, k1, unusable, end.h_floored[l]);
     double y_new[13], err[13];
-    integration::step_solution<13, me.stages>(me, 1.0, y.v, rates, y_new, err);
+    integration::step_solution<13, me_stages>(me_stages, me_b, me_b_low, 1.0, y.v, rates, y_new, err);
     const double measured = relative_error(k.p.p_min, y_new, err);
     const bool accepted = admissible(k, y_new) & finite(measured) & !(max_of(measured, 1e-16) > k.o.stol);
     const double H = yield_value<WW>(k, y_new, 0.0, unusable);

@@ -225,16 +225,18 @@ class ExplicitSubstepping {
       }
       for (int s = 1; s < tb.stages && r == Reason::none; ++s) {
         Vector ys;
-        stage_state<size>(tb, s, h, y.data(), stage_rates, ys.data());
+        stage_state<size>(tb.a[s].data(), s, h, y.data(), stage_rates, ys.data());
         r = rate(ys, deps, k[s], c);
       }
       Vector y_new, err;
       if (r == Reason::none) {
         // A two-stage scheme's count (modified Euler, the default) as a constant (steps.hpp).
         if (tb.stages == modified_euler_tableau.stages)
-          step_solution<size, modified_euler_tableau.stages>(tb, h, y.data(), stage_rates, y_new.data(), err.data());
+          step_solution<size, modified_euler_tableau.stages>(tb.stages, tb.b.data(), tb.b_low.data(), h, y.data(),
+                                                             stage_rates, y_new.data(), err.data());
         else
-          step_solution<size>(tb, h, y.data(), stage_rates, y_new.data(), err.data());
+          step_solution<size>(tb.stages, tb.b.data(), tb.b_low.data(), h, y.data(), stage_rates, y_new.data(),
+                              err.data());
         r = model_.admissibility(y_new);
       }
       if (r != Reason::none) {  // a stage left the admissible region: shrink hard

@@ -30,16 +30,21 @@ ACST_INLINE void heun_combination(const double* __restrict y, const double* __re
   }
 }
 
-// Stage s's state of an embedded Runge-Kutta step of size h from y: ys = y + sum_{j<s} (h a_sj) k_j,
-// summed in the order of j. k(j, i): number i of stage j's rate (a lane reads its own where it
-// lies, with no copy: the kernel's loops over lanes vectorise only as one straight body).
+// The coefficients come as plain arrays (a tableau's rows, b and b_low): std::array's operator[]
+// is an inline function of external linkage that a compiler may leave out of line, and the AVX2
+// kernel must emit none (acst/inline.hpp); the kernel passes its own copies of them.
+
+// Stage s's state of an embedded Runge-Kutta step of size h from y: ys = y + sum_{j<s} (h a_sj) k_j
+// (a_s: the tableau's row s), summed in the order of j. k(j, i): number i of stage j's rate (a
+// lane reads its own where it lies, with no copy: the kernel's loops over lanes vectorise only as
+// one straight body).
 template <int N, class Rates>
-ACST_INLINE void stage_state(const Tableau& tb, int s, double h, const double* __restrict y, const Rates& k,
+ACST_INLINE void stage_state(const double* a_s, int s, double h, const double* __restrict y, const Rates& k,
                              double* __restrict ys) {
 #pragma GCC unroll 13
   for (int i = 0; i < N; ++i) ys[i] = y[i];
   for (int j = 0; j < s; ++j) {
-    const double a = h * tb.a[s][j];
+    const double a = h * a_s[j];
 #pragma GCC unroll 13
     for (int i = 0; i < N; ++i) ys[i] += a * k(j, i);
   }
@@ -52,9 +57,10 @@ ACST_INLINE void stage_state(const Tableau& tb, int s, double h, const double* _
 // count read from the tableau, or passed as an argument, came too late for that (the kernel 4 %
 // larger); in the scalar integrator it saves 1 % of an update's instructions.
 template <int N, int Stages = 0, class Rates>
-ACST_INLINE void step_solution(const Tableau& tb, double h, const double* __restrict y, const Rates& k,
-                               double* __restrict y_new, double* __restrict err) {
-  const int stages = Stages > 0 ? Stages : tb.stages;
+ACST_INLINE void step_solution(int tableau_stages, const double* b_of, const double* b_low_of, double h,
+                               const double* __restrict y, const Rates& k, double* __restrict y_new,
+                               double* __restrict err) {
+  const int stages = Stages > 0 ? Stages : tableau_stages;
 #pragma GCC unroll 13
   for (int i = 0; i < N; ++i) {
     y_new[i] = y[i];
@@ -62,7 +68,7 @@ ACST_INLINE void step_solution(const Tableau& tb, double h, const double* __rest
   }
 
   for (int s = 0; s < stages; ++s) {
-    const double b = h * tb.b[s], e = h * (tb.b[s] - tb.b_low[s]);
+    const double b = h * b_of[s], e = h * (b_of[s] - b_low_of[s]);
 #pragma GCC unroll 13
     for (int i = 0; i < N; ++i) {
       y_new[i] += b * k(s, i);
