@@ -49,6 +49,9 @@ def pair_description(candidate, fold, held_ids, registry):
     held = [registry[i] for i in held_ids]
     held_files = set().union(*(files_of(e) for e in held))
     d["experiments"] = [e for e in d["experiments"] if not (files_of(e) & held_files)] + copy.deepcopy(held)
+    kept_types = {e.get("test", "") for e in d["experiments"]}
+    for t in {e.get("test", "") for e in candidate["experiments"]} - kept_types - {""}:
+        del d["weights"]["types"][t]  # its experiments went with the fold's files (a closing of held-out curves)
     types = {e.get("test", "") for e in held}
     for t in types - set(d["weights"]["types"]) - {""}:
         d["weights"]["types"][t] = 0.2  # only predicted: the type weight never enters a fit
