@@ -32,15 +32,14 @@ double MicropolarRotations::inertia_per_mass(const Grid& grid) const {
   return std::max(l * l, h * h);
 }
 
-// The nodes' rotational inertia and micro-rotation rate (angular momentum over inertia), the walls'
-// mirror images folded in (a rotation changes sign in a mirror).
-void MicropolarRotations::map(const Particles& P, StepScratch& w, const Walls& walls, const Grid& grid) {
+// The nodes' rotational inertia and angular momentum (the step's map adds them).
+MicropolarRotations::MapTerms MicropolarRotations::map_terms(const Particles& P, const Grid& grid) {
+  return {inertia_.data(), spin_.data(), P.mass.data(), state_.spin.data(), inertia_per_mass(grid)};
+}
+
+// The walls' mirror images folded in (a rotation changes sign in a mirror); the micro-rotation rate.
+void MicropolarRotations::finish_map(const Walls& walls, const Grid& grid) {
   if (!active()) return;
-  const double j = inertia_per_mass(grid);
-  w.map_to_grid<2>({inertia_.data(), spin_.data()}, P.n, [&](std::size_t p) {
-    const double J = P.mass[p] * j;
-    return std::array<double, 2>{J, J * state_.spin[p]};
-  });
   walls.fold(inertia_.data(), FieldKind::scalar, grid);
   walls.fold(spin_.data(), FieldKind::rotation, grid);
   for (std::size_t i = 0; i < grid.nodes(); ++i) spin_[i] = inertia_[i] > 0.0 ? spin_[i] / inertia_[i] : 0.0;
@@ -73,37 +72,21 @@ long long MicropolarRotations::update_stress(const Particles& P, const StepScrat
   return -1;
 }
 
-// The nodal couples of both stresses are folded; over the inertia they become the spin's rate,
-// damped as the velocities are.
-void MicropolarRotations::add_forces(const Particles& P, StepScratch& w, const Walls& walls, const Grid& grid,
-                                     double grid_damping) {
+MicropolarRotations::ForceTerms MicropolarRotations::force_terms() {
+  return {{skew_fx_.data(), skew_fy_.data(), couple_.data()},
+          state_.skew_stress.data(),
+          state_.couple_x.data(),
+          state_.couple_y.data()};
+}
+
+void MicropolarRotations::finish_forces(StepScratch& w, const Walls& walls, const Grid& grid, double grid_damping) {
   if (!active()) return;
-  double* out[3] = {skew_fx_.data(), skew_fy_.data(), couple_.data()};
-  w.scatter.run(3, out, P.n, [&](std::size_t p, double* const* f) {
-    const double V = kilo * P.volume(p);
-    const double A = V * state_.skew_stress[p], mx = V * state_.couple_x[p], my = V * state_.couple_y[p];
-    w.stencil(p, [&](std::size_t i, double S, double dx, double dy) {
-      f[0][i] += 0.5 * A * dy;
-      f[1][i] -= 0.5 * A * dx;
-      f[2][i] += A * S - (mx * dx + my * dy);
-    });
-  });
   walls.fold(couple_.data(), FieldKind::rotation, grid);
   for (std::size_t i = 0; i < grid.nodes(); ++i) {
     w.fx[i] += skew_fx_[i];
     w.fy[i] += skew_fy_[i];
     couple_[i] = inertia_[i] > 0.0 ? couple_[i] / inertia_[i] - grid_damping * spin_[i] : 0.0;
   }
-}
-
-// PIC: the grains' spin holds no history of its own, and PIC damps the rotations' grid-scale noise.
-void MicropolarRotations::update_spin(const StepScratch& w, std::size_t particles, double dt, double particle_damping) {
-  if (!active()) return;
-  parallel_for(w.scatter.threads(), particles, [&](int, std::size_t p) {
-    double s = 0.0;
-    w.stencil(p, [&](std::size_t i, double S, double, double) { s += S * (spin_[i] + couple_[i] * dt); });
-    state_.spin[p] = s - particle_damping * state_.spin[p] * dt;
-  });
 }
 
 // The stiffest rotation's frequency, omega^2 = ratio c^2 (1 + 4 l^2/h^2) / j (the relative

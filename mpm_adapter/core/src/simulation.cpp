@@ -218,7 +218,6 @@ void Simulation::step() {
   compute_shape_functions();
   phase.lap(StepPhase::shape_functions);
   map_mass_and_momentum();
-  micropolar_.map(particles_, work_, boundaries_.walls, grid_);
   phase.lap(StepPhase::map_to_grid);
   apply_constraints();
   phase.lap(StepPhase::constraints);
@@ -250,18 +249,31 @@ void Simulation::refresh_time_step() {
   clock_.dt = stable_time_step();
 }
 
-// Mass and momentum to the grid, the walls' mirror images folded in.
+// Mass and momentum to the grid (with the micropolar rotations' inertia and angular momentum in
+// the same pass), the walls' mirror images folded in.
 void Simulation::map_mass_and_momentum() {
   StepScratch& w = work_;
   Particles& P = particles_;
-  w.map_to_grid<3>({w.mass.data(), w.ax.data(), w.ay.data()}, P.n, [&](std::size_t p) {
+  const auto momentum = [&](std::size_t p) {
     const double m = P.mass[p];
     return std::array<double, 3>{m, m * P.vx[p], m * P.vy[p]};
-  });
+  };
+  if (micropolar_.active()) {
+    const MicropolarRotations::MapTerms rotation = micropolar_.map_terms(P, grid_);
+    w.map_to_grid<5>({w.mass.data(), w.ax.data(), w.ay.data(), rotation.inertia, rotation.momentum}, P.n,
+                     [&](std::size_t p) {
+                       const std::array<double, 3> m = momentum(p);
+                       const std::array<double, 2> r = rotation(p);
+                       return std::array<double, 5>{m[0], m[1], m[2], r[0], r[1]};
+                     });
+  } else {
+    w.map_to_grid<3>({w.mass.data(), w.ax.data(), w.ay.data()}, P.n, momentum);
+  }
   w.mass_body = w.mass;
   fold(w.mass.data(), FieldKind::scalar);
   fold(w.ax.data(), FieldKind::x);
   fold(w.ay.data(), FieldKind::y);
+  micropolar_.finish_map(boundaries_.walls, grid_);
 }
 
 // The footing's contact force on every particle that touches it; the footing's reaction is their
@@ -279,35 +291,47 @@ void Simulation::internal_force_and_reactions() {
   StepScratch& w = work_;
   Particles& P = particles_;
   const std::size_t n = P.n;
-  double* out[2] = {w.fx.data(), w.fy.data()};
   const double g = settings_.gravity, q = boundaries_.surcharge, sigma3 = boundaries_.confining_pressure;
-  // Instantiated with and without the sides' pressure: without it, the loop is the one it was.
-  const auto scatter = [&](auto confined) {
-    w.scatter.run(2, out, n, [&](std::size_t p, double* const* f) {
+  // Instantiated with and without the sides' pressure (without it, the loop is the one it was) and
+  // with and without the micropolar rotations' forces and couples (fields 2-4 of the same pass).
+  const auto scatter = [&](auto confined, auto rotations) {
+    constexpr bool with_rotations = decltype(rotations)::value;
+    const MicropolarRotations::ForceTerms couples = micropolar_.force_terms();
+    double* out[5] = {w.fx.data(), w.fy.data(), couples.fields[0], couples.fields[1], couples.fields[2]};
+    w.scatter.run(with_rotations ? 5 : 2, out, n, [&](std::size_t p, double* const* f) {
       const double V = kilo * P.volume(p);
       const double* s = &P.stress[6 * p];
       const double sxx = V * s[0], syy = V * s[1], sxy = V * s[3];
       const double by = -P.weight_mass[p] * g - kilo * q * P.surcharge_length[p];
+      MicropolarRotations::ParticleCouples c{};
+      if constexpr (with_rotations) c = couples(p, V);
       if constexpr (decltype(confined)::value) {
         // On the side's current length: the particle's height stretched by F_yy.
         const double bx = kilo * sigma3 * P.side_length[p] * std::fabs(P.F[4 * p + 3]);
         w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
           f[0][i] += bx * S - (sxx * gx + sxy * gy);
           f[1][i] += by * S - (sxy * gx + syy * gy);
+          if constexpr (with_rotations) c.add(f + 2, i, S, gx, gy);
         });
       } else {
         w.stencil(p, [&](std::size_t i, double S, double gx, double gy) {
           f[0][i] -= sxx * gx + sxy * gy;
           f[1][i] += by * S - (sxy * gx + syy * gy);
+          if constexpr (with_rotations) c.add(f + 2, i, S, gx, gy);
         });
       }
     });
   };
-  if (sigma3 != 0.0)
-    scatter(std::true_type{});
+  const bool rotations = micropolar_.active();
+  if (sigma3 != 0.0 && rotations)
+    scatter(std::true_type{}, std::true_type{});
+  else if (sigma3 != 0.0)
+    scatter(std::true_type{}, std::false_type{});
+  else if (rotations)
+    scatter(std::false_type{}, std::true_type{});
   else
-    scatter(std::false_type{});
-  micropolar_.add_forces(P, w, boundaries_.walls, grid_, settings_.grid_damping);
+    scatter(std::false_type{}, std::false_type{});
+  micropolar_.finish_forces(w, boundaries_.walls, grid_, settings_.grid_damping);
   if (boundaries_.footing.uses_contact()) boundaries_.footing.spread(grid_, w.mass.data(), w.fx.data(), w.fy.data());
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
@@ -367,35 +391,44 @@ void Simulation::update_particles() {
   const bool xpic = is_xpic_step(clock_.step);
   if (xpic) xpic_velocity(settings_.update == ParticleUpdate::PIC ? 1 : settings_.xpic_order);
   const double ag = settings_.grid_damping, ap = settings_.particle_damping;
-  parallel_for(T, n, [&](int, std::size_t p) {
-    double svx = 0, svy = 0, sax = 0, say = 0, smx = 0, smy = 0;
-    w.stencil(p, [&](std::size_t i, double S, double, double) {
-      svx += S * w.vx[i];
-      svy += S * w.vy[i];
-      sax += S * w.ax[i];
-      say += S * w.ay[i];
-      if (xpic) {
-        smx += S * w.xpx[i];
-        smy += S * w.xpy[i];
+  // With the micropolar rotations the particles' spin is mapped in the same walk of the stencil.
+  const auto update = [&](auto rotations) {
+    constexpr bool with_rotations = decltype(rotations)::value;
+    parallel_for(T, n, [&](int, std::size_t p) {
+      double svx = 0, svy = 0, sax = 0, say = 0, smx = 0, smy = 0, spin = 0;
+      w.stencil(p, [&](std::size_t i, double S, double, double) {
+        svx += S * w.vx[i];
+        svy += S * w.vy[i];
+        sax += S * w.ax[i];
+        say += S * w.ay[i];
+        if (xpic) {
+          smx += S * w.xpx[i];
+          smy += S * w.xpy[i];
+        }
+        if constexpr (with_rotations) spin += S * micropolar_.spin_at(i, clock_.dt);
+      });
+      const double vx0 = P.vx[p], vy0 = P.vy[p];
+      double vx1, vy1;
+      const bool pic = P.stress_free[p] != 0;  // nothing in the particle can hold a velocity of its own
+      if (pic || xpic) {  // the grid's velocity: S v_L for PIC, the XPIC(m) field otherwise
+        const double bx = pic ? svx : smx, by = pic ? svy : smy;
+        vx1 = bx + sax * clock_.dt - (ag * svx + ap * vx0) * clock_.dt;
+        vy1 = by + say * clock_.dt - (ag * svy + ap * vy0) * clock_.dt;
+      } else {
+        vx1 = vx0 + (sax - ag * svx - ap * vx0) * clock_.dt;
+        vy1 = vy0 + (say - ag * svy - ap * vy0) * clock_.dt;
       }
+      P.vx[p] = vx1;
+      P.vy[p] = vy1;
+      P.x[p] += (svx + 0.5 * (vx1 - vx0)) * clock_.dt;
+      P.y[p] += (svy + 0.5 * (vy1 - vy0)) * clock_.dt;
+      if constexpr (with_rotations) micropolar_.set_spin(p, spin, clock_.dt, ap);
     });
-    const double vx0 = P.vx[p], vy0 = P.vy[p];
-    double vx1, vy1;
-    const bool pic = P.stress_free[p] != 0;  // nothing in the particle can hold a velocity of its own
-    if (pic || xpic) {  // the grid's velocity: S v_L for PIC, the XPIC(m) field otherwise
-      const double bx = pic ? svx : smx, by = pic ? svy : smy;
-      vx1 = bx + sax * clock_.dt - (ag * svx + ap * vx0) * clock_.dt;
-      vy1 = by + say * clock_.dt - (ag * svy + ap * vy0) * clock_.dt;
-    } else {
-      vx1 = vx0 + (sax - ag * svx - ap * vx0) * clock_.dt;
-      vy1 = vy0 + (say - ag * svy - ap * vy0) * clock_.dt;
-    }
-    P.vx[p] = vx1;
-    P.vy[p] = vy1;
-    P.x[p] += (svx + 0.5 * (vx1 - vx0)) * clock_.dt;
-    P.y[p] += (svy + 0.5 * (vy1 - vy0)) * clock_.dt;
-  });
-  micropolar_.update_spin(w, n, clock_.dt, settings_.particle_damping);
+  };
+  if (micropolar_.active())
+    update(std::true_type{});
+  else
+    update(std::false_type{});
 }
 
 // Momentum re-extrapolated from the new particle velocities; the constrained velocity field.

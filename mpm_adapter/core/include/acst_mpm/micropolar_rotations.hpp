@@ -12,6 +12,7 @@
 //
 // The unit owns its particle fields (checkpointed as its ParticleState) and its nodal fields; its
 // hooks do nothing while it is off (length 0), so the classical step is the one it was, to the bit.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -40,17 +41,57 @@ class MicropolarRotations {
   // Sizes the nodal fields for a grid of `nodes` nodes (nothing while off).
   void prepare(std::size_t nodes);
 
-  // The step's hooks, in the order Simulation::step calls them.
-  // After the mass: the nodes' rotational inertia and micro-rotation rate.
-  void map(const Particles& P, StepScratch& w, const Walls& walls, const Grid& grid);
+  // The step's hooks, in the order Simulation::step calls them. The rotations' terms of the maps,
+  // the internal force and the particle update ride on the step's own passes over the particles
+  // (one walk of each particle's stencil, every nodal sum added in the order it had on its own):
+  // the pass takes the unit's fields and per-particle terms, and the unit finishes its part after.
+
+  // The map: the nodes' rotational inertia and angular momentum, a particle's {J, J spin}.
+  struct MapTerms {
+    double* inertia;
+    double* momentum;
+    const double* mass;
+    const double* spin;
+    double inertia_per_mass;
+    std::array<double, 2> operator()(std::size_t p) const {
+      const double J = mass[p] * inertia_per_mass;
+      return {J, J * spin[p]};
+    }
+  };
+  MapTerms map_terms(const Particles& P, const Grid& grid);
+  // After the map: the walls' mirror images folded in, the angular momentum over the inertia.
+  void finish_map(const Walls& walls, const Grid& grid);
   // After the constraints: the skew and couple stresses over dt from the nodal velocities; the
   // first particle whose stresses are not finite, or -1.
   long long update_stress(const Particles& P, const StepScratch& w, const double* vx, const double* vy, double dt);
-  // In the internal force, before the walls fold it: the skew stress's nodal forces added to
-  // w.fx, w.fy; the nodal couples over the inertia become the spin's rate.
-  void add_forces(const Particles& P, StepScratch& w, const Walls& walls, const Grid& grid, double grid_damping);
-  // After the particles' velocities: their micro-rotation rates from the grid's.
-  void update_spin(const StepScratch& w, std::size_t particles, double dt, double particle_damping);
+  // The internal force: the skew stress's nodal forces (x, y) and the nodal couples, the three
+  // fields `fields`; particle(p, V) the stresses times the particle's volume V (N/m, N), whose
+  // add(f, S, dS/dx, dS/dy) adds a node's share into f[0..3).
+  struct ParticleCouples {
+    double A, mx, my;
+    void add(double* const* f, std::size_t i, double S, double dx, double dy) const {
+      f[0][i] += 0.5 * A * dy;
+      f[1][i] -= 0.5 * A * dx;
+      f[2][i] += A * S - (mx * dx + my * dy);
+    }
+  };
+  struct ForceTerms {
+    double* fields[3];
+    const double *skew_stress, *couple_x, *couple_y;
+    ParticleCouples operator()(std::size_t p, double V) const {
+      return {V * skew_stress[p], V * couple_x[p], V * couple_y[p]};
+    }
+  };
+  ForceTerms force_terms();
+  // After the internal force's scatter, before the walls fold the force: the skew forces added to
+  // w.fx, w.fy; the couples folded and, over the inertia, the spin's rate, damped as the velocities are.
+  void finish_forces(StepScratch& w, const Walls& walls, const Grid& grid, double grid_damping);
+  // The particle update: a particle's spin is PIC, sum S (spin_i + spin rate_i dt) (spin_at), less
+  // its damping (set_spin); the grains' spin holds no history of its own.
+  double spin_at(std::size_t node, double dt) const { return spin_[node] + couple_[node] * dt; }
+  void set_spin(std::size_t p, double mapped, double dt, double particle_damping) {
+    state_.spin[p] = mapped - particle_damping * state_.spin[p] * dt;
+  }
   // The time step the rotations allow (infinite while off), c_max the stiffest (scaled) wave speed.
   double stable_time_step(double c_max, const Grid& grid, double cfl) const;
 

@@ -46,7 +46,7 @@ class Scatter {
       }
     });
   }
-  static constexpr int max_fields = 4;
+  static constexpr int max_fields = 5;
 
  private:
   // Thread t's (t >= 1) copy of field c.
