@@ -21,14 +21,14 @@ scenes and element outputs in OUT/work/.
       --h data/sweeps/recorded/reference_study/kept/H86.7 --out bench/results/footing_v_h_account
 """
 import argparse
-import copy
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
 
-from footing_common import ROOT, gp_quoted
+from footing_common import ROOT, gp_quoted, value_at
 from footing_particle_replay import FABRIC, STRAINS, STRESSES, STEM, p_q, read_rows, scene
 
 LAB = os.path.join(ROOT, "data", "scenes", "element")
@@ -36,15 +36,6 @@ LT88 = {0: "lab_lt88_fig5a_w00_hw1p0", 90: "lab_lt88_fig5a_w90_hw1p0"}
 GAP_STRAINS = (3.0, 6.0, 10.0, 12.0)
 EQ_MARKS = (3.0, 6.0, 10.0)
 STATE = ("p_kPa", "q_kPa", "stress_ratio", "void_ratio", "psi", "zeta", "A", "F_norm")
-
-
-def interpolate(xs, ys, x):
-    """y at x on the polyline (xs increasing where it matters); None outside it."""
-    for i in range(1, len(xs)):
-        if (xs[i - 1] - x) * (xs[i] - x) <= 0 and xs[i] != xs[i - 1]:
-            t = (x - xs[i - 1]) / (xs[i] - xs[i - 1])
-            return ys[i - 1] + t * (ys[i] - ys[i - 1])
-    return None
 
 
 def run(tool, scenes, out):
@@ -94,12 +85,12 @@ def lab_curve(path):
 
 def element_tests(a, work):
     """The LT88 scenes (model and data) and the plane-strain pair; returns their curves."""
-    scenes = []
+    scenes, lab_data = [], {}
     for angle, stem in LT88.items():
         with open(os.path.join(LAB, stem + ".json")) as f:
             s = json.load(f)
         s["material"]["file"] = os.path.abspath(a.material)
-        s["lab_data"] = os.path.normpath(os.path.join(LAB, s["lab_data"]))
+        s["lab_data"] = lab_data[angle] = os.path.normpath(os.path.join(LAB, s["lab_data"]))
         path = os.path.join(work, stem + ".json")
         with open(path, "w") as f:
             json.dump(s, f, indent=1)
@@ -118,9 +109,7 @@ def element_tests(a, work):
     for angle, stem in LT88.items():
         m = read_rows(os.path.join(work, stem + ".csv"))
         curves[f"lt88_model_{angle}"] = ([r["eps_a_pct"] for r in m], [r["sigma_11_kPa"] / r["sigma_33_kPa"] for r in m])
-        with open(os.path.join(LAB, stem + ".json")) as f:
-            data = os.path.normpath(os.path.join(LAB, json.load(f)["lab_data"]))
-        curves[f"lt88_data_{angle}"] = lab_curve(data)
+        curves[f"lt88_data_{angle}"] = lab_curve(lab_data[angle])
     for angle in (0, 90):
         m = read_rows(os.path.join(work, f"psc_b{angle:02d}.csv"))
         curves[f"psc_{angle}"] = ([r["eps_a_pct"] for r in m], [r["q_kPa"] for r in m])
@@ -130,9 +119,9 @@ def element_tests(a, work):
 def gaps(curves, key0, key90):
     out = {}
     for x in GAP_STRAINS:
-        y0 = interpolate(*curves[key0], x)
-        y90 = interpolate(*curves[key90], x)
-        out[f"{x:g}"] = None if y0 is None or y90 is None else round((y0 - y90) / y0, 4)
+        y0 = value_at(*curves[key0], x)
+        y90 = value_at(*curves[key90], x)
+        out[f"{x:g}"] = None if math.isnan(y0) or math.isnan(y90) else round((y0 - y90) / y0, 4)
     return out
 
 
@@ -142,8 +131,8 @@ def overtaking(curves, key0, key90):
     peak = x0[max(range(len(y0)), key=y0.__getitem__)]
     x90, y90 = curves[key90]
     for x, y in zip(x90, y90):
-        ref = interpolate(x0, y0, x)
-        if x > peak and ref is not None and y > ref:
+        ref = value_at(x0, y0, x)
+        if x > peak and not math.isnan(ref) and y > ref:
             return round(x, 2)
     return None
 
