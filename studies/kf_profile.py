@@ -16,8 +16,6 @@ the fit itself holds the closings, "The closing in the fit".)
 Writes OUT/profile.csv (k_f, the fit's objective and each fold's pooled RMS/scale as fitted, the
 fitted values, the Table 1 biases, the closings) and OUT/profile.png.
 """
-import csv
-import glob
 import json
 import math
 import os
@@ -25,14 +23,13 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from calibration_runs import run_prediction  # noqa: E402
+from calibration_runs import TABLE1, peak_rows  # noqa: E402
 from footing_common import gp_quoted, tool_arguments, write_table  # noqa: E402
 from lt88_fabric_closing import closing_run, closings, stress_ratio_curves  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CALIBRATION = os.path.join(ROOT, "data", "calibration")
 FIT = os.path.join(CALIBRATION, "toyoura_acst_fit.json")
-TABLE1 = os.path.join(CALIBRATION, "toyoura_acst_table1_prediction.json")
 REPORTED = ["F0[tatsuoka]", "e_A", "n", "d1", "m", "h1", "c"]
 
 
@@ -79,14 +76,8 @@ def pooled(report, ids):
 
 
 def table1_biases(parameter_set, out, tool, k_f):
-    with open(TABLE1) as f:
-        d = json.load(f)
-    d["defaults"]["data"] = os.path.normpath(os.path.join(CALIBRATION, d["defaults"]["data"]))
-    report = run_prediction(os.path.join(out, tag_of(k_f), "table1"), d, parameter_set, {}, tool, f"k_f {k_f:g}")
-    rows = []
-    for path in glob.glob(os.path.join(report, "curves", "*_points.csv")):
-        with open(path) as f:
-            rows += [(float(r["sigma3_kPa"]), float(r["simulated"]) - float(r["measured"])) for r in csv.DictReader(f)]
+    rows = [(s, sim - meas) for s, _, meas, sim in
+            peak_rows(os.path.join(out, tag_of(k_f), "table1"), TABLE1, parameter_set, {}, tool, f"k_f {k_f:g}")]
     mean = lambda v: sum(v) / len(v)
     high = [d for s, d in rows if s >= 9.0]
     return {"table1_rows": len(rows), "table1_bias_deg": round(mean([d for _, d in rows]), 2),

@@ -9,13 +9,16 @@ OUT/decision.json, OUT/decision.md and OUT/decision.png: each fold's predicted e
 S (their mean) with its bootstrap interval over the folds, the paired difference from `delivered`
 and the decision the rule gives. Results in bench/results/set_decision/."""
 import copy
+import glob
 import json
 import os
 import random
 import subprocess
 import sys
+import tempfile
 import time
 
+from calibration_runs import TABLE1, peak_line, peak_rows
 from footing_common import ROOT, gp_quoted, tool_arguments, write_table
 
 DECISION = os.path.join(ROOT, "data", "calibration", "decision")
@@ -91,6 +94,36 @@ def run_pair(a, name, fold, candidate, held_ids, registry):
     return result
 
 
+def table1_beside(a, candidate):
+    """Reported beside the score, not deciding: Fukushima & Tatsuoka's 78 Table 1 peaks predicted
+    with the set the candidate fitted without `source_ft84` (the fold that holds them out): the mean
+    error, the mean absolute error, the mean error at sigma3' >= 9 kPa, and the fall of phi with
+    e_0.3 at fixed pressure (b of phi = a + b e_0.3 + c ln sigma3') simulated and measured. Kept in
+    runs/CANDIDATE/source_ft84/table1.json."""
+    folder = os.path.join(a.out, "runs", candidate, "source_ft84")
+    kept = os.path.join(folder, "table1.json")
+    if os.path.exists(kept):
+        with open(kept) as f:
+            return json.load(f)
+    parameters = glob.glob(os.path.join(folder, "cv", "*_cv_source_ft84_parameters.json"))
+    if len(parameters) != 1:
+        sys.exit(f"{candidate} / source_ft84: expected one set fitted without the fold in {folder}/cv")
+    with tempfile.TemporaryDirectory() as scratch:
+        rows = peak_rows(os.path.join(scratch, "table1"), TABLE1, parameters[0], {}, a.tool, f"{candidate} / Table 1")
+    mean = lambda v: sum(v) / len(v)
+    high = [r for r in rows if r[0] >= 9.0]
+    result = {"candidate": candidate, "parameters": os.path.relpath(parameters[0], a.out), "rows": len(rows),
+              "bias_deg": mean([r[3] - r[2] for r in rows]), "mean_abs_deg": mean([abs(r[3] - r[2]) for r in rows]),
+              "bias_deg_sigma3_ge_9": mean([r[3] - r[2] for r in high])}
+    for tag, chosen in (("", rows), ("_sigma3_ge_9", high)):
+        for source, column in (("simulated", 3), ("measured", 2)):
+            result[f"dphi_de_{source}_deg{tag}"] = peak_line(chosen, column)[0][1]
+    with open(kept + ".partial", "w") as f:
+        json.dump(result, f, indent=1)
+    os.replace(kept + ".partial", kept)
+    return result
+
+
 def percentile(values, q):
     v = sorted(values)
     k = (len(v) - 1) * q
@@ -124,8 +157,8 @@ def summarise(a, folds, results):
                            ", but its paired difference from delivered reaches "
                            f"{summary[best]['difference_5_95'][1]:+.3f} at the 95th percentile: not better beyond the folds' spread") +
                            "; the delivered set stays")}
-    with open(os.path.join(a.out, "decision.json"), "w") as f:
-        json.dump({"folds": folds, "candidates": summary, "decision": decision, "resamples": RESAMPLES, "seed": SEED}, f, indent=1)
+    for c in CANDIDATES:
+        summary[c]["table1_held_out"] = table1_beside(a, c)
     header = ["candidate"] + names + ["S", "S 5-95 %", "S - S(delivered) (5-95 %)"]
     write_table(os.path.join(a.out, "decision.csv"), header, [dict(zip(header, r)) for r in rows])
     with open(os.path.join(a.out, "decision.md"), "w") as f:
@@ -133,6 +166,19 @@ def summarise(a, folds, results):
         for r in rows:
             f.write("| " + " | ".join(r) + " |\n")
         f.write(f"\nDecision: {decision['reason']}.\n")
+        f.write("\nReported beside the score, not deciding: Fukushima & Tatsuoka's Table 1 peaks predicted by the set "
+                "each candidate fitted without `source_ft84` (the fold that holds them out; phi simulated - measured, deg; "
+                "b: the fall of phi with e_0.3 at fixed pressure, deg per unit e, simulated / measured).\n\n"
+                "| candidate | peaks | mean error | mean abs. error | mean error, sigma3' >= 9 kPa | b, all | b, sigma3' >= 9 kPa |\n"
+                "|---|---|---|---|---|---|---|\n")
+        for c in CANDIDATES:
+            t = summary[c]["table1_held_out"]
+            f.write(f"| {c} | {t['rows']} | {t['bias_deg']:+.2f} | {t['mean_abs_deg']:.2f} | {t['bias_deg_sigma3_ge_9']:+.2f} | "
+                    + " | ".join(f"{t['dphi_de_simulated_deg' + k]:.1f} / {t['dphi_de_measured_deg' + k]:.1f} = "
+                                 f"{t['dphi_de_simulated_deg' + k] / t['dphi_de_measured_deg' + k]:.2f}" for k in ("", "_sigma3_ge_9"))
+                    + " |\n")
+    with open(os.path.join(a.out, "decision.json"), "w") as f:
+        json.dump({"folds": folds, "candidates": summary, "decision": decision, "resamples": RESAMPLES, "seed": SEED}, f, indent=1)
     plot(a, names, E)
     return decision
 

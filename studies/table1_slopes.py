@@ -18,54 +18,25 @@ Writes OUT/slopes.csv (case, rows, source, n, dphi_de_deg, dphi_dln_sigma3_deg,
 equivalent_de_per_ln_sigma3, rms_deg: the fit's residual; bias_deg: the simulated minus the
 measured peak, mean over the rows).
 """
-import csv
-import glob
 import json
-import math
 import os
 import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from calibration_runs import run_prediction  # noqa: E402
+from calibration_runs import peak_line, peak_rows  # noqa: E402
 from footing_common import tool_arguments, write_table  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RANGES = [("all", 0.0, 1e9), ("sigma3 >= 9 kPa", 9.0, 1e9), ("sigma3 >= 45 kPa", 45.0, 1e9), ("sigma3 < 25 kPa", 0.0, 25.0)]
-
-
-def least_squares(X, y):
-    """Coefficients of y ~ X (rows of 3) from the normal equations, by Gauss-Jordan elimination."""
-    A = [[sum(x[i] * x[j] for x in X) for j in range(3)] + [sum(x[i] * v for x, v in zip(X, y))] for i in range(3)]
-    for i in range(3):
-        k = max(range(i, 3), key=lambda r: abs(A[r][i]))
-        A[i], A[k] = A[k], A[i]
-        for r in range(3):
-            if r != i:
-                f = A[r][i] / A[i][i]
-                A[r] = [a - f * b for a, b in zip(A[r], A[i])]
-    return [A[i][3] / A[i][i] for i in range(3)]
 
 
 def run_case(text, out, tool):
     parts = text.split(":")
     if len(parts) not in (2, 3) or not re.fullmatch(r"[A-Za-z0-9_.-]+", parts[0]):
         sys.exit(f"{text}: expected NAME:DESCRIPTION[:key=value,...] with NAME a plain stem")
-    name, description = parts[0], os.path.abspath(parts[1])
-    with open(description) as f:
-        d = json.load(f)
-    here = os.path.dirname(description)
-    d["defaults"]["data"] = os.path.normpath(os.path.join(here, d["defaults"]["data"]))
-    d["name"] = name
+    name = parts[0]
     replaced = {k: float(v) for k, v in (item.split("=", 1) for item in parts[2].split(","))} if len(parts) == 3 else {}
-    report = run_prediction(os.path.join(out, name), d, os.path.normpath(os.path.join(here, d["material"]["file"])),
-                            replaced, tool, text)
-    rows = []
-    for path in glob.glob(os.path.join(report, "curves", "*_points.csv")):
-        with open(path) as f:
-            rows += [(float(r["sigma3_kPa"]), float(r["void_ratio"]), float(r["measured"]), float(r["simulated"]))
-                     for r in csv.DictReader(f)]
-    return name, rows
+    return name, peak_rows(os.path.join(out, name), os.path.abspath(parts[1]), None, replaced, tool, text)
 
 
 def main():
@@ -76,11 +47,8 @@ def main():
         for label, lo, hi in RANGES:
             chosen = [r for r in rows if lo <= r[0] < hi]
             for source, k in (("measured", 2), ("simulated", 3)):
-                X = [(1.0, r[1], math.log(r[0])) for r in chosen]
-                y = [r[k] for r in chosen]
-                c = least_squares(X, y)
-                rms = math.sqrt(sum((v - (c[0] + c[1] * x[1] + c[2] * x[2])) ** 2 for x, v in zip(X, y)) / len(y))
-                table.append({"case": name, "rows": label, "source": source, "n": len(y), "dphi_de_deg": round(c[1], 1),
+                c, rms = peak_line(chosen, k)
+                table.append({"case": name, "rows": label, "source": source, "n": len(chosen), "dphi_de_deg": round(c[1], 1),
                               "dphi_dln_sigma3_deg": round(c[2], 2), "equivalent_de_per_ln_sigma3": round(-c[2] / c[1], 4),
                               "rms_deg": round(rms, 2),
                               "bias_deg": round(sum(r[3] - r[2] for r in chosen) / len(chosen), 2) if k == 3 else ""})
