@@ -148,8 +148,11 @@ double sin2_factor(const std::vector<double>& q, const std::vector<double>& s) {
   return num / den;
 }
 
-std::string band_text(const Band& b) {
-  return std::isnan(b.absolute) ? "; band +-" + number_text(100.0 * b.relative) + " %" : "; band +-" + number_text(b.absolute);
+std::string band_text(const Band& b, bool outside = false) {
+  const bool relative = std::isnan(b.absolute);
+  const double width = outside ? b.outside(1.0) : relative ? b.relative : b.absolute;
+  const std::string text = relative ? number_text(100.0 * width) + " %" : number_text(width);
+  return "; band +-" + text + (outside && b.common > 0.0 ? " (with the part common to every case)" : "");
 }
 
 }  // namespace
@@ -159,7 +162,7 @@ std::vector<Band> read_bands(const json& j, const std::string& path) {
   std::vector<Band> out;
   for (std::size_t i = 0; i < j.size(); ++i) {
     const std::string p = path + "/" + std::to_string(i);
-    f::allow_keys(j[i], {"column", "relative", "absolute", "source"}, p);
+    f::allow_keys(j[i], {"column", "relative", "absolute", "common", "source"}, p);
     Band b;
     if (!j[i].contains("column")) f::fail(p, "'column' is required");
     b.column = f::string(j[i]["column"], p + "/column");
@@ -169,6 +172,8 @@ std::vector<Band> read_bands(const json& j, const std::string& path) {
       b.relative = f::number(j[i]["relative"], p + "/relative", {0.0, 10.0});
     else
       b.absolute = f::number(j[i]["absolute"], p + "/absolute", {0.0, 1e12});
+    if (j[i].contains("common"))
+      b.common = f::number(j[i]["common"], p + "/common", std::isnan(b.absolute) ? f::Range{0.0, 10.0} : f::Range{0.0, 1e12});
     if (!j[i].contains("source")) f::fail(p, "'source' is required: where the band was measured");
     b.source = f::string(j[i]["source"], p + "/source");
     out.push_back(std::move(b));
@@ -270,7 +275,7 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
       // lies beyond it fails.
       bool all = true, any_beyond = false, value = true;
       for (double x : v) {
-        const double off = std::fabs(x - c.value), u = width(x, x);
+        const double off = std::fabs(x - c.value), u = band ? band->outside(x) : 0.0;
         all = all && off + u <= tolerance, value = value && off <= tolerance;
         any_beyond = any_beyond || off - u > tolerance;
       }
@@ -314,7 +319,7 @@ CheckResult judge(const FindingCheck& c, const std::vector<ordered_json>& rows, 
     }
     case Expectation::report: break;
   }
-  if (band) r.numbers += band_text(*band);
+  if (band) r.numbers += band_text(*band, c.expect == Expectation::near);
   r.status = missing ? unknown : status;
   return r;
 }

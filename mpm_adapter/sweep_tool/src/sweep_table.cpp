@@ -117,12 +117,16 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
           "(docs/sweeps.md, \"Findings\").\n\n";
     if (!sweep.bands.empty()) {
       md += "## Bands\n\nA check is judged against the band of its column: the spread the method itself leaves in "
-            "that column (cell, loading speed, round-off). It holds or fails only where the whole band agrees; "
+            "that column (cell, loading speed, round-off, the material's length). A part common to every case cancels "
+            "between cases and counts only against an outside value. It holds or fails only where the whole band agrees; "
             "otherwise it is *within the band* and says nothing either way.\n\n| column | band | measured in |\n|---|---|---|\n";
+      const auto width = [](const Band& b, double w) {
+        return std::isnan(b.absolute) ? markdown_cell(ordered_json(100.0 * w)) + " %" : markdown_cell(ordered_json(w));
+      };
       for (const Band& b : sweep.bands)
-        md += "| " + markdown_cell(b.column) + " | +-" +
-              (std::isnan(b.absolute) ? markdown_cell(ordered_json(100.0 * b.relative)) + " %" : markdown_cell(ordered_json(b.absolute))) +
-              " | " + markdown_cell(b.source) + " |\n";
+        md += "| " + markdown_cell(b.column) + " | +-" + width(b, std::isnan(b.absolute) ? b.relative : b.absolute) +
+              (b.common > 0.0 ? " between cases; +-" + width(b, b.common) + " common to every case" : "") + " | " +
+              markdown_cell(b.source) + " |\n";
       md += "\n";
     }
     if (!sweep.findings.empty()) md += "## Findings\n\n";

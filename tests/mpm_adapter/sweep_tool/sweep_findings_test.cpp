@@ -155,6 +155,24 @@ TEST(SweepFindings, TheBeddingFactorIsFittedWithItsBand) {
   EXPECT_EQ(name_of(judged("", no_angle).status), "open");
 }
 
+// A spread every case shares (q10 with 30 % common: 94.9 about a = 300 against an outside value,
+// hypot(30, 90)) cancels between cases and widens only `near`.
+TEST(SweepFindings, ACommonSpreadWidensOnlyTheComparisonWithAnOutsideValue) {
+  const std::string q10 = R"([{"column": "q", "relative": 0.1, "source": "s"}])";
+  const std::string shared = R"([{"column": "q", "relative": 0.1, "common": 0.3, "source": "s"}])";
+  const std::string far = R"({"expect": "near", "value": 400, "within_abs": 20, "cases": ["a"], "column": "q"})";
+  const std::string close = R"({"expect": "near", "value": 310, "within": 0.2, "cases": ["a"], "column": "q"})";
+  EXPECT_EQ(banded(far, q10), "fails");  // 100 off, band 30: beyond 20 at either end
+  EXPECT_EQ(banded(far, shared), "within the band");  // 100 - 94.9 < 20 < 100 + 94.9
+  EXPECT_EQ(banded(close, q10), "holds");  // 10 + 30 <= 62
+  EXPECT_EQ(banded(close, shared), "within the band");  // 10 + 94.9 > 62
+  for (const char* between : {R"({"expect": "decreasing", "cases": ["a", "b", "c"], "column": "q"})",
+                              R"({"expect": "greater", "cases": ["a", "b"], "column": "q"})"})
+    EXPECT_EQ(banded(between, shared), banded(between, q10)) << between;
+  const CheckResult r = judge(check(far), rows(), bands(shared));
+  EXPECT_NE(r.numbers.find("with the part common to every case"), std::string::npos) << r.numbers;
+}
+
 TEST(SweepFindings, BadBandsNameTheirPath) {
   const auto error_of = [](const std::string& text) {
     try {
@@ -168,6 +186,8 @@ TEST(SweepFindings, BadBandsNameTheirPath) {
   EXPECT_NE(error_of(R"([{"column": "q", "relative": -0.1, "source": "s"}])").find("/bands/0/relative"), std::string::npos);
   EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1, "absolute": 1, "source": "s"}])").find("/bands/0"), std::string::npos);
   EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1}])").find("'source' is required"), std::string::npos);
+  EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1, "common": -0.2, "source": "s"}])").find("/bands/0/common"),
+            std::string::npos);
   EXPECT_NE(error_of(R"([{"column": "q", "relative": 0.1, "source": "s"}, {"column": "q", "absolute": 1, "source": "s"}])")
                 .find("/bands/1/column"),
             std::string::npos);

@@ -43,12 +43,21 @@ struct Finding {
 // The spread a column's value keeps from the method itself (the cell, the loading speed, round-off:
 // what the converged footing leaves), measured elsewhere and cited in `source`: a difference
 // between two values within it says nothing (docs/sweeps.md, "Findings").
+// `common` (in the band's own unit, 0 without one) is a spread every case shares, such as the
+// material's internal length, which moves all loads together: it cancels between cases and
+// widens only a comparison with an outside value (`near`), where the two add as independent
+// spreads (root of the sum of squares).
 struct Band {
   std::string column, source;
   double relative = std::numeric_limits<double>::quiet_NaN();  // of the larger value's size
   double absolute = std::numeric_limits<double>::quiet_NaN();
-  // The band about values of size `size`.
+  double common = 0.0;
+  // The band about values of size `size`, between cases of the sweep.
   double about(double size) const { return std::isnan(absolute) ? relative * std::fabs(size) : absolute; }
+  // The band about a value of size `size` against an outside value.
+  double outside(double size) const {
+    return std::hypot(about(size), std::isnan(absolute) ? common * std::fabs(size) : common);
+  }
 };
 
 // Reads "bands" at `path` (one per column). Throws InputError.
