@@ -112,10 +112,12 @@ bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& o
   std::fill(out.w, out.w + 4, 0.0);
   std::fill(out.dw, out.dw + 4, 0.0);
   // The average of the splines over [a, b]: Simpson's rule on each piece inside one interval,
-  // exact for the quadratic pieces.
+  // exact for the quadratic pieces. The pieces' outer ends are the domain's ends, where the
+  // splines give the slope: their values are kept, not evaluated again.
   const double inv = 1.0 / (b - a);
-  const auto piece = [&](int k, double c, double d) {
-    double lo[3], mid[3], hi[3];
+  double at_a[3], at_b[3];
+  const auto piece = [&](int k, double c, double d, double lo[3], double hi[3]) {
+    double mid[3];
     splines_on_interval(t, k, c, lo);
     splines_on_interval(t, k, 0.5 * (c + d), mid);
     splines_on_interval(t, k, d, hi);
@@ -123,14 +125,12 @@ bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& o
     for (int s = 0; s < 3; ++s) out.w[slot + s] += (d - c) / 6.0 * (lo[s] + 4.0 * mid[s] + hi[s]) * inv;
   };
   if (kb == ka) {
-    piece(ka, a, b);
+    piece(ka, a, b, at_a, at_b);
   } else {
-    piece(ka, a, t[kb]);
-    piece(kb, t[kb], b);
+    double left_of_knot[3], right_of_knot[3];  // at t_kb, as the last of interval ka and the first of kb
+    piece(ka, a, t[kb], at_a, left_of_knot);
+    piece(kb, t[kb], b, right_of_knot, at_b);
   }
-  double at_a[3], at_b[3];
-  splines_on_interval(t, ka, a, at_a);
-  splines_on_interval(t, kb, b, at_b);
   for (int s = 0; s < 3; ++s) {
     out.dw[s] -= at_a[s] * inv;
     out.dw[kb - ka + s] += at_b[s] * inv;
