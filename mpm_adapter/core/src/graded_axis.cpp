@@ -25,6 +25,13 @@ void splines_on_interval(const double* t, int k, double x, double out[3]) {
   out[2] = right[1] * degree1[1];
 }
 
+// The splines N_{j-2}, N_{j-1} at knot t_j (N_{j-3} and N_j are zero there): what
+// splines_on_interval gives at t_j on interval j - 1 (as its slots 1, 2) or on interval j (slots
+// 0, 1), to the bit: at a knot its degree-1 quotients are exactly 0 and 1 and one pair is left.
+DoublePair splines_at_knot(const double* t, int j) {
+  return DoublePair{t[j + 1] - t[j], t[j] - t[j - 1]} / DoublePair{t[j + 1] - t[j - 1], t[j + 1] - t[j - 1]};
+}
+
 // The intervals between a window's edge and an end node D further out, outward: cells growing
 // by the grading's ratio up to about its largest, then at least 4 even cells b whose last has
 // the end node at its centre, `beyond` more of b and one to close the last node's support.
@@ -112,24 +119,25 @@ bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& o
   std::fill(out.w, out.w + 4, 0.0);
   std::fill(out.dw, out.dw + 4, 0.0);
   // The average of the splines over [a, b]: Simpson's rule on each piece inside one interval,
-  // exact for the quadratic pieces. The pieces' outer ends are the domain's ends, where the
-  // splines give the slope: their values are kept, not evaluated again.
+  // exact for the quadratic pieces. The splines at the domain's ends give the slope too; at a
+  // knot between the pieces they take the knot's shortcut.
   const double inv = 1.0 / (b - a);
   double at_a[3], at_b[3];
-  const auto piece = [&](int k, double c, double d, double lo[3], double hi[3]) {
+  const auto piece = [&](int k, double c, const double lo[3], double d, const double hi[3]) {
     double mid[3];
-    splines_on_interval(t, k, c, lo);
     splines_on_interval(t, k, 0.5 * (c + d), mid);
-    splines_on_interval(t, k, d, hi);
     const int slot = k - ka;
     for (int s = 0; s < 3; ++s) out.w[slot + s] += (d - c) / 6.0 * (lo[s] + 4.0 * mid[s] + hi[s]) * inv;
   };
+  splines_on_interval(t, ka, a, at_a);
+  splines_on_interval(t, kb, b, at_b);
   if (kb == ka) {
-    piece(ka, a, b, at_a, at_b);
+    piece(ka, a, at_a, b, at_b);
   } else {
-    double left_of_knot[3], right_of_knot[3];  // at t_kb, as the last of interval ka and the first of kb
-    piece(ka, a, t[kb], at_a, left_of_knot);
-    piece(kb, t[kb], b, right_of_knot, at_b);
+    const DoublePair knot = splines_at_knot(t, kb);
+    const double end_of_ka[3] = {0.0, knot[0], knot[1]}, start_of_kb[3] = {knot[0], knot[1], 0.0};
+    piece(ka, a, at_a, t[kb], end_of_ka);
+    piece(kb, t[kb], start_of_kb, b, at_b);
   }
   for (int s = 0; s < 3; ++s) {
     out.dw[s] -= at_a[s] * inv;
