@@ -150,7 +150,7 @@ double sin2_factor(const std::vector<double>& q, const std::vector<double>& s) {
 
 std::string band_text(const Band& b, bool outside = false) {
   const bool relative = std::isnan(b.absolute);
-  const double width = outside ? b.outside(1.0) : relative ? b.relative : b.absolute;
+  const double width = outside ? b.outside(1.0) : b.about(1.0);
   const std::string text = relative ? number_text(100.0 * width) + " %" : number_text(width);
   return "; band +-" + text + (outside && b.common > 0.0 ? " (with the part common to every case)" : "");
 }

@@ -124,7 +124,7 @@ void write_sweep_report(const SweepSpec& sweep, const std::vector<ordered_json>&
         return std::isnan(b.absolute) ? markdown_cell(ordered_json(100.0 * w)) + " %" : markdown_cell(ordered_json(w));
       };
       for (const Band& b : sweep.bands)
-        md += "| " + markdown_cell(b.column) + " | +-" + width(b, std::isnan(b.absolute) ? b.relative : b.absolute) +
+        md += "| " + markdown_cell(b.column) + " | +-" + width(b, b.about(1.0)) +
               (b.common > 0.0 ? " between cases; +-" + width(b, b.common) + " common to every case" : "") + " | " +
               markdown_cell(b.source) + " |\n";
       md += "\n";
