@@ -25,13 +25,6 @@ void splines_on_interval(const double* t, int k, double x, double out[3]) {
   out[2] = right[1] * degree1[1];
 }
 
-// The splines N_{j-2}, N_{j-1} at knot t_j (N_{j-3} and N_j are zero there): what
-// splines_on_interval gives at t_j on interval j - 1 (as its slots 1, 2) or on interval j (slots
-// 0, 1), to the bit: at a knot its degree-1 quotients are exactly 0 and 1 and one pair is left.
-DoublePair splines_at_knot(const double* t, int j) {
-  return DoublePair{t[j + 1] - t[j], t[j] - t[j - 1]} / DoublePair{t[j + 1] - t[j - 1], t[j + 1] - t[j - 1]};
-}
-
 // The intervals between a window's edge and an end node D further out, outward: cells growing
 // by the grading's ratio up to about its largest, then at least 4 even cells b whose last has
 // the end node at its centre, `beyond` more of b and one to close the last node's support.
@@ -75,6 +68,15 @@ GradedAxis::GradedAxis(std::vector<double> knots) : knots_(std::move(knots)) {
     if (!(knots_[k] > knots_[k - 1])) throw std::invalid_argument("a graded axis's knots must increase strictly");
   nodes_.resize(knots_.size() - 3);
   for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i] = 0.5 * (knots_[i + 1] + knots_[i + 2]);
+  // What splines_on_interval gives at t_j on interval j - 1 (slots 1, 2) or on interval j (slots 0,
+  // 1), to the bit: at a knot its degree-1 quotients are exactly 0 and 1 and one pair is left.
+  at_knot_.assign(2 * knots_.size(), 0.0);
+  const double* t = knots_.data();
+  for (std::size_t j = 1; j + 1 < knots_.size(); ++j) {
+    const DoublePair n = DoublePair{t[j + 1] - t[j], t[j] - t[j - 1]} / DoublePair{t[j + 1] - t[j - 1], t[j + 1] - t[j - 1]};
+    at_knot_[2 * j] = n[0];
+    at_knot_[2 * j + 1] = n[1];
+  }
 }
 
 int GradedAxis::interval(double x) const {
@@ -120,7 +122,7 @@ bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& o
   std::fill(out.dw, out.dw + 4, 0.0);
   // The average of the splines over [a, b]: Simpson's rule on each piece inside one interval,
   // exact for the quadratic pieces. The splines at the domain's ends give the slope too; at a
-  // knot between the pieces they take the knot's shortcut.
+  // knot between the pieces they are the axis's own (GradedAxis::splines_at_knot).
   const double inv = 1.0 / (b - a);
   double at_a[3], at_b[3];
   const auto piece = [&](int k, double c, const double lo[3], double d, const double hi[3]) {
@@ -134,7 +136,7 @@ bool graded_weights(const GradedAxis& axis, double x, double l, GradedWeights& o
   if (kb == ka) {
     piece(ka, a, at_a, b, at_b);
   } else {
-    const DoublePair knot = splines_at_knot(t, kb);
+    const double* knot = axis.splines_at_knot(kb);
     const double end_of_ka[3] = {0.0, knot[0], knot[1]}, start_of_kb[3] = {knot[0], knot[1], 0.0};
     piece(ka, a, at_a, t[kb], end_of_ka);
     piece(kb, t[kb], start_of_kb, b, at_b);

@@ -30,9 +30,12 @@ class GradedAxis {
   int node_at(double x, double tolerance) const;
   // The node cell i with node(i) <= x < node(i + 1), clamped to the first and last cell.
   int cell(double x) const;
+  // The splines N_{j-2}, N_{j-1} at an inner knot t_j (0 < j < knots - 1; the others are zero
+  // there), worked out with the knots: where a particle's domain straddles t_j.
+  const double* splines_at_knot(int j) const { return &at_knot_[2 * static_cast<std::size_t>(j)]; }
 
  private:
-  std::vector<double> knots_, nodes_;
+  std::vector<double> knots_, nodes_, at_knot_;
 };
 
 // The 4 nodes along a graded axis that can carry weight for a particle at x with domain
