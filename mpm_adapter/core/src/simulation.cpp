@@ -15,6 +15,10 @@ namespace acst::mpm {
 
 using common::DoublePair;
 
+namespace {
+constexpr const char* micropolar_not_finite = "the micropolar stresses are not finite";
+}  // namespace
+
 Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
                        std::vector<std::shared_ptr<const AbiMaterial>> materials, Particles particles,
                        double particle_half_width)
@@ -165,10 +169,12 @@ void Simulation::nodal_velocity(const double* px, const double* py, double* vx, 
   }
 }
 
-void Simulation::update_stress(const double* vx, const double* vy, double dt) {
+void Simulation::update_stress(const double* vx, const double* vy, double dt,
+                               const MicropolarRotations::StressTerms* rotations) {
   const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
   const MaterialFailure failure =
-      update_material_points(particles_, materials_, regulariser_, grid_, averaged, work_, vx, vy, dt);
+      update_material_points(particles_, materials_, regulariser_, grid_, averaged, work_, vx, vy, dt, rotations);
+  fail_at(failure.micropolar_particle, micropolar_not_finite);
   if (failure.particle >= 0) fail(static_cast<std::size_t>(failure.particle), failure.message, failure.reproducer);
 }
 
@@ -221,12 +227,21 @@ void Simulation::step() {
   phase.lap(StepPhase::map_to_grid);
   apply_constraints();
   phase.lap(StepPhase::constraints);
-  fail_at(micropolar_.update_stress(particles_, work_, work_.vx.data(), work_.vy.data(), clock_.dt),
-          "the micropolar stresses are not finite");
-  phase.lap(StepPhase::micropolar_stress);
   const StressUpdate when = settings_.stress_update;
+  // The rotations' stresses (with v_L and the whole dt) on the material's walk of the stencils where
+  // it walks them with v_L; on their own walk otherwise (the same numbers).
+  const bool rotations_with_material = micropolar_.active() && when != StressUpdate::last &&
+                                       settings_.volumetric_averaging != VolumetricAveraging::cell;
+  if (!rotations_with_material)
+    fail_at(micropolar_.update_stress(particles_, work_, work_.vx.data(), work_.vy.data(), clock_.dt),
+            micropolar_not_finite);
+  phase.lap(StepPhase::micropolar_stress);
   const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
-  if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
+  if (when != StressUpdate::last) {  // with v_L
+    const MicropolarRotations::StressTerms rotations =
+        micropolar_.stress_terms(particles_, work_.vx.data(), work_.vy.data(), clock_.dt);
+    update_stress(work_.vx.data(), work_.vy.data(), part, rotations_with_material ? &rotations : nullptr);
+  }
   phase.lap(StepPhase::stress_update);
   footing_contact();
   phase.lap(StepPhase::footing_contact);
@@ -331,7 +346,7 @@ void Simulation::internal_force_and_reactions() {
     scatter(std::false_type{}, std::true_type{});
   else
     scatter(std::false_type{}, std::false_type{});
-  micropolar_.finish_forces(w, boundaries_.walls, grid_, settings_.grid_damping);
+  micropolar_.finish_forces(w, boundaries_.walls, grid_, settings_.grid_damping, clock_.dt);
   if (boundaries_.footing.uses_contact()) boundaries_.footing.spread(grid_, w.mass.data(), w.fx.data(), w.fy.data());
   // Reactions: the body's share m_body/m of a node's folded force f drives its particles, so a
   // wall's mirror image adds (m_body/m) f - f_body there and a footing node takes -(m_body/m) f.
@@ -405,7 +420,7 @@ void Simulation::update_particles() {
           smx += S * w.xpx[i];
           smy += S * w.xpy[i];
         }
-        if constexpr (with_rotations) spin += S * micropolar_.spin_at(i, clock_.dt);
+        if constexpr (with_rotations) spin += S * micropolar_.spin_at(i);
       });
       const double vx0 = P.vx[p], vy0 = P.vy[p];
       double vx1, vy1;

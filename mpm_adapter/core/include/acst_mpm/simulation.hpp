@@ -101,7 +101,8 @@ class Simulation {
   void compute_shape_functions();
   void map_mass_and_momentum();
   void apply_constraints();
-  void update_stress(const double* vx, const double* vy, double dt);
+  void update_stress(const double* vx, const double* vy, double dt,
+                     const MicropolarRotations::StressTerms* rotations = nullptr);
   void footing_contact();
   void internal_force_and_reactions();
   void update_particles();
