@@ -32,17 +32,15 @@ void velocity_gradients_averaged(const Particles& P, const Grid& grid, StepScrat
 
 MaterialFailure update_material_points(Particles& P, const std::vector<std::shared_ptr<const AbiMaterial>>& materials,
                                        const Regulariser& regulariser, const Grid& grid, bool cell_averaged,
-                                       StepScratch& w, const double* vx, const double* vy, double dt_half,
-                                       const MicropolarRotations::StressTerms* rotations) {
+                                       StepScratch& w, const double* vx, const double* vy, double dt_half) {
   const int T = w.scatter.threads();
-  std::vector<long long> failed(T, -1), rotations_failed(T, -1);
+  std::vector<long long> failed(T, -1);
   std::vector<std::string> messages(T), reproducers(T);
   const auto offset_of = [&](const AbiMaterial& mat, std::size_t p) { return regulariser.offset(mat, p); };
   if (cell_averaged) velocity_gradients_averaged(P, grid, w, vx, vy);
   // The loop is instantiated once per setting and chosen here: a branch inside it cost the
-  // default 1-2 %. With the micropolar rotations' stress terms (not with averaged gradients) the
-  // rotations' stresses are updated on the same walk of each stencil, before F moves.
-  auto update_all = [&](auto averaged_gradients, auto with_rotations) -> MaterialFailure {
+  // default 1-2 %.
+  auto update_all = [&](auto averaged_gradients) -> MaterialFailure {
     const auto gradient = [&](std::size_t p) {  // L_ij = dv_i/dx_j: xx xy yx yy
       std::array<double, 4> L;
       if constexpr (decltype(averaged_gradients)::value)
@@ -50,18 +48,6 @@ MaterialFailure update_material_points(Particles& P, const std::vector<std::shar
       else
         L = w.velocity_gradient(p, vx, vy);
       return L;
-    };
-    const auto gradient_and_rotations = [&](int t, std::size_t p) {
-      if constexpr (decltype(with_rotations)::value) {
-        MicropolarRotations::StressSums sums;
-        const std::array<double, 4> L = w.velocity_gradient(
-            p, vx, vy, [&](std::size_t i, double S, double dx, double dy) { rotations->add(sums, i, S, dx, dy); });
-        if (!rotations->update(p, sums) && rotations_failed[t] < 0) rotations_failed[t] = static_cast<long long>(p);
-        return L;
-      } else {
-        (void)t;
-        return gradient(p);
-      }
     };
     // In runs of AbiMaterial::batch_size particles: one call updates a run of one material (the
     // library updates points of the common kind together, with the same numbers).
@@ -71,7 +57,7 @@ MaterialFailure update_material_points(Particles& P, const std::vector<std::shar
       std::array<double, 4 * run> Ls;
       bool one_material = true;
       for (std::size_t p = first; p < first + n; ++p) {
-        const std::array<double, 4> L = gradient_and_rotations(t, p);
+        const std::array<double, 4> L = gradient(p);
         std::copy(L.begin(), L.end(), &Ls[4 * (p - first)]);
         one_material = one_material && P.material[p] == P.material[first];
         double* F = &P.F[4 * p];
@@ -109,8 +95,6 @@ MaterialFailure update_material_points(Particles& P, const std::vector<std::shar
         if (st.code != ACST_OK && failed[t] < 0) note_failure(p, st);
       }
     });
-    for (long long p : rotations_failed)
-      if (p >= 0) return {-1, {}, {}, p};
     for (int t = 0; t < T; ++t)
       if (failed[t] >= 0) return {failed[t], messages[t], reproducers[t]};
     // The followed particles' frames (a handful: outside the loop above, which stays as it was).
@@ -119,8 +103,7 @@ MaterialFailure update_material_points(Particles& P, const std::vector<std::shar
                           dt_half);
     return {};
   };
-  if (cell_averaged) return update_all(std::true_type{}, std::false_type{});
-  return rotations ? update_all(std::false_type{}, std::true_type{}) : update_all(std::false_type{}, std::false_type{});
+  return cell_averaged ? update_all(std::true_type{}) : update_all(std::false_type{});
 }
 
 }  // namespace acst::mpm

@@ -45,31 +45,27 @@ void MicropolarRotations::finish_map(const Walls& walls, const Grid& grid) {
   for (std::size_t i = 0; i < grid.nodes(); ++i) spin_[i] = inertia_[i] > 0.0 ? spin_[i] / inertia_[i] : 0.0;
 }
 
-MicropolarRotations::StressTerms MicropolarRotations::stress_terms(const Particles& P, const double* vx,
-                                                                   const double* vy, double dt) {
-  return {this, &P, vx, vy, spin_.data(), dt};
-}
-
 // The couple stress, a vector in the plane, turns with the continuum (its Jaumann rate).
-bool MicropolarRotations::update_particle_stress(const Particles& P, std::size_t p, const StressSums& s, double dt) {
-  const double l2 = settings_.length * settings_.length;
-  const double k = modulus(P, p), turn = s.W * dt;
-  const double mx = state_.couple_x[p], my = state_.couple_y[p];
-  state_.skew_stress[p] += k * (s.W - s.rate) * dt;
-  state_.couple_x[p] = mx + k * l2 * s.gx * dt - turn * my;
-  state_.couple_y[p] = my + k * l2 * s.gy * dt + turn * mx;
-  return std::isfinite(state_.skew_stress[p] + state_.couple_x[p] + state_.couple_y[p]);
-}
-
 long long MicropolarRotations::update_stress(const Particles& P, const StepScratch& w, const double* vx,
                                              const double* vy, double dt) {
   if (!active()) return -1;
-  const StressTerms terms = stress_terms(P, vx, vy, dt);
+  const double l2 = settings_.length * settings_.length;
   std::vector<long long> failed(w.scatter.threads(), -1);
   parallel_for(w.scatter.threads(), P.n, [&](int t, std::size_t p) {
-    StressSums s;
-    w.stencil(p, [&](std::size_t i, double S, double dx, double dy) { terms.add(s, i, S, dx, dy); });
-    if (!terms.update(p, s) && failed[t] < 0) failed[t] = static_cast<long long>(p);
+    double W = 0.0, rate = 0.0, gx = 0.0, gy = 0.0;
+    w.stencil(p, [&](std::size_t i, double S, double dx, double dy) {
+      W += 0.5 * (vy[i] * dx - vx[i] * dy);
+      rate += S * spin_[i];
+      gx += spin_[i] * dx;
+      gy += spin_[i] * dy;
+    });
+    const double k = modulus(P, p), turn = W * dt;
+    const double mx = state_.couple_x[p], my = state_.couple_y[p];
+    state_.skew_stress[p] += k * (W - rate) * dt;
+    state_.couple_x[p] = mx + k * l2 * gx * dt - turn * my;
+    state_.couple_y[p] = my + k * l2 * gy * dt + turn * mx;
+    if (!std::isfinite(state_.skew_stress[p] + state_.couple_x[p] + state_.couple_y[p]) && failed[t] < 0)
+      failed[t] = static_cast<long long>(p);
   });
   for (long long p : failed)
     if (p >= 0) return p;

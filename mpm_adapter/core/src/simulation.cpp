@@ -15,10 +15,6 @@ namespace acst::mpm {
 
 using common::DoublePair;
 
-namespace {
-constexpr const char* micropolar_not_finite = "the micropolar stresses are not finite";
-}  // namespace
-
 Simulation::Simulation(Grid grid, Boundaries boundaries, Settings settings,
                        std::vector<std::shared_ptr<const AbiMaterial>> materials, Particles particles,
                        double particle_half_width)
@@ -169,12 +165,10 @@ void Simulation::nodal_velocity(const double* px, const double* py, double* vx, 
   }
 }
 
-void Simulation::update_stress(const double* vx, const double* vy, double dt,
-                               const MicropolarRotations::StressTerms* rotations) {
+void Simulation::update_stress(const double* vx, const double* vy, double dt) {
   const bool averaged = settings_.volumetric_averaging == VolumetricAveraging::cell;
   const MaterialFailure failure =
-      update_material_points(particles_, materials_, regulariser_, grid_, averaged, work_, vx, vy, dt, rotations);
-  fail_at(failure.micropolar_particle, micropolar_not_finite);
+      update_material_points(particles_, materials_, regulariser_, grid_, averaged, work_, vx, vy, dt);
   if (failure.particle >= 0) fail(static_cast<std::size_t>(failure.particle), failure.message, failure.reproducer);
 }
 
@@ -227,21 +221,12 @@ void Simulation::step() {
   phase.lap(StepPhase::map_to_grid);
   apply_constraints();
   phase.lap(StepPhase::constraints);
-  const StressUpdate when = settings_.stress_update;
-  // The rotations' stresses (with v_L and the whole dt) on the material's walk of the stencils where
-  // it walks them with v_L; on their own walk otherwise (the same numbers).
-  const bool rotations_with_material = micropolar_.active() && when != StressUpdate::last &&
-                                       settings_.volumetric_averaging != VolumetricAveraging::cell;
-  if (!rotations_with_material)
-    fail_at(micropolar_.update_stress(particles_, work_, work_.vx.data(), work_.vy.data(), clock_.dt),
-            micropolar_not_finite);
+  fail_at(micropolar_.update_stress(particles_, work_, work_.vx.data(), work_.vy.data(), clock_.dt),
+          "the micropolar stresses are not finite");
   phase.lap(StepPhase::micropolar_stress);
+  const StressUpdate when = settings_.stress_update;
   const double part = when == StressUpdate::average ? 0.5 * clock_.dt : clock_.dt;  // of dt per update
-  if (when != StressUpdate::last) {  // with v_L
-    const MicropolarRotations::StressTerms rotations =
-        micropolar_.stress_terms(particles_, work_.vx.data(), work_.vy.data(), clock_.dt);
-    update_stress(work_.vx.data(), work_.vy.data(), part, rotations_with_material ? &rotations : nullptr);
-  }
+  if (when != StressUpdate::last) update_stress(work_.vx.data(), work_.vy.data(), part);  // with v_L
   phase.lap(StepPhase::stress_update);
   footing_contact();
   phase.lap(StepPhase::footing_contact);

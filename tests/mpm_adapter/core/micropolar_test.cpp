@@ -1,17 +1,13 @@
 // Micropolar rotations of the soil (docs/mpm.md, "Micropolar rotations"): a length of 0 is the
 // classical continuum to the bit; a homogeneously compressed block, which neither rotates nor
 // bends, gives the classical result; a uniform micro-rotation in a body at rest swings at the
-// closed-form frequency of the grains' rotation against the continuum, sqrt(k / (rho l^2)); the
-// rotations' stresses updated on the material's walk of the stencils are their own walk's, to the bit.
+// closed-form frequency of the grains' rotation against the continuum, sqrt(k / (rho l^2)).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 #include <vector>
 
-#include "acst_mpm/material_update.hpp"
-#include "acst_mpm/particle_weights.hpp"
 #include "mpm_scenes.hpp"
 
 namespace mpm_micropolar_test {
@@ -90,69 +86,6 @@ TEST(Micropolar, AUniformMicroRotationSwingsAtItsClosedFormFrequency) {
   // The continuum itself stayed nearly at rest there (the explicit step's precursor of the
   // boundaries' disturbance only): its speed is a thousandth of the grains' turning speed.
   EXPECT_LT(std::hypot(P.vx[centre], P.vy[centre]), 1e-3 * omega0 * l);
-}
-
-// The rotations' stresses updated on the material's walk of each stencil (update_material_points
-// with stress_terms, as the step does with one stress update per step) are those of their own walk
-// followed by the material's, to the bit: the skew and couple stresses, the material's stress and F,
-// on particles a footing has loaded for 40 steps and nodal velocities that turn and shear them; a
-// node's velocity made NaN is the same particle's failure, reported before the material's.
-TEST(Micropolar, StressesOnTheMaterialsWalkAreThoseOfTheirOwnWalk) {
-  Simulation sim = mpm_test::build(mpm_test::small_sand_footing(R"(, "micropolar": {"length_m": 0.05})"));
-  for (int k = 0; k < 40; ++k) sim.step();
-  const Grid& grid = sim.grid();
-  StepScratch w;
-  w.nx = grid.nx;
-  w.scatter.configure(2, grid.nodes());
-  w.first_i.assign(sim.particles().n, 0);
-  w.first_j.assign(sim.particles().n, 0);
-  for (auto* v : {&w.wx, &w.wy, &w.dwx, &w.dwy}) v->assign(4 * sim.particles().n, 0.0);
-  ASSERT_EQ(ParticleWeights(0.25).compute(grid, sim.particles(), w), -1);
-  std::vector<double> vx(grid.nodes()), vy(grid.nodes());
-  for (std::size_t i = 0; i < grid.nodes(); ++i) {  // a turn and a shear, in m/s
-    const double x = grid.node_x(static_cast<int>(i % grid.nx)), y = grid.y0 + static_cast<double>(i / grid.nx) * grid.hy;
-    vx[i] = -0.02 * (y - 0.5) + 0.01 * y * y;
-    vy[i] = 0.03 * (x - 1.0) - 0.005 * x * y;
-  }
-  const double dt = 0.5 * sim.clock().dt;
-  const auto run = [&](bool on_material_walk, std::vector<double>& u, long long& rotations_failed,
-                       long long& material_failed) {
-    Particles P = sim.particles();
-    MicropolarRotations rotations = sim.micropolar();
-    if (on_material_walk) {
-      const MicropolarRotations::StressTerms terms = rotations.stress_terms(P, u.data(), vy.data(), dt);
-      const MaterialFailure f = update_material_points(P, sim.materials(), sim.regulariser(), grid, false, w, u.data(),
-                                                       vy.data(), dt, &terms);
-      rotations_failed = f.micropolar_particle;
-      material_failed = f.particle;
-    } else {
-      rotations_failed = rotations.update_stress(P, w, u.data(), vy.data(), dt);
-      material_failed =
-          update_material_points(P, sim.materials(), sim.regulariser(), grid, false, w, u.data(), vy.data(), dt).particle;
-    }
-    return std::make_pair(P, rotations.state());
-  };
-  long long rf_own = 0, mf_own = 0, rf_fused = 0, mf_fused = 0;
-  const auto own = run(false, vx, rf_own, mf_own), fused = run(true, vx, rf_fused, mf_fused);
-  EXPECT_EQ(rf_own, -1);
-  EXPECT_EQ(rf_fused, -1);
-  EXPECT_EQ(mf_fused, mf_own);
-  EXPECT_EQ(fused.second.skew_stress, own.second.skew_stress);
-  EXPECT_EQ(fused.second.couple_x, own.second.couple_x);
-  EXPECT_EQ(fused.second.couple_y, own.second.couple_y);
-  EXPECT_EQ(fused.first.stress, own.first.stress);
-  EXPECT_EQ(fused.first.statev, own.first.statev);
-  EXPECT_EQ(fused.first.F, own.first.F);
-  double largest_couple = 0.0;
-  for (double m : fused.second.couple_x) largest_couple = std::max(largest_couple, std::fabs(m));
-  EXPECT_GT(largest_couple, 0.0);  // the comparison compared something
-  // A NaN velocity at the node under the 100th particle's stencil: the same particle fails.
-  std::vector<double> bad = vx;
-  bad[static_cast<std::size_t>(w.first_j[100] + 1) * grid.nx + w.first_i[100] + 1] = std::nan("");
-  run(false, bad, rf_own, mf_own);
-  run(true, bad, rf_fused, mf_fused);
-  EXPECT_GE(rf_own, 0);
-  EXPECT_EQ(rf_fused, rf_own);
 }
 
 TEST(Micropolar, BadSettingsNameTheirJsonPath) {

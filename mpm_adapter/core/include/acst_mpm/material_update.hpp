@@ -9,7 +9,6 @@
 
 #include "acst_mpm/grid.hpp"
 #include "acst_mpm/material_adapter.hpp"
-#include "acst_mpm/micropolar_rotations.hpp"
 #include "acst_mpm/particles.hpp"
 #include "acst_mpm/regulariser.hpp"
 #include "acst_mpm/step_scratch.hpp"
@@ -17,22 +16,17 @@
 namespace acst::mpm {
 
 // The first refused update (in thread order): its particle (-1: none), the material's message and
-// the scene acst_element replays; or, before any of that, the first particle whose micropolar
-// stresses are not finite (-1: none).
+// the scene acst_element replays.
 struct MaterialFailure {
   long long particle = -1;
   std::string message, reproducer;
-  long long micropolar_particle = -1;
 };
 
 // `cell_averaged`: each dilation rate the mean over its cell's particles (docs/mpm.md,
-// "Volumetric locking"); vx, vy the nodal velocities. `rotations` (null: none; not with
-// `cell_averaged`): the micropolar rotations' stresses, updated on the same walk of each stencil
-// (their own dt, the same velocities). On a failure the followed particles' frames are left as
-// they were.
+// "Volumetric locking"); vx, vy the nodal velocities. On a failure the followed particles' frames
+// are left as they were.
 MaterialFailure update_material_points(Particles& P, const std::vector<std::shared_ptr<const AbiMaterial>>& materials,
                                        const Regulariser& regulariser, const Grid& grid, bool cell_averaged,
-                                       StepScratch& w, const double* vx, const double* vy, double dt,
-                                       const MicropolarRotations::StressTerms* rotations = nullptr);
+                                       StepScratch& w, const double* vx, const double* vy, double dt);
 
 }  // namespace acst::mpm

@@ -62,29 +62,9 @@ class MicropolarRotations {
   // After the map: the walls' mirror images folded in, the angular momentum over the inertia.
   void finish_map(const Walls& walls, const Grid& grid);
   // After the constraints: the skew and couple stresses over dt from the nodal velocities; the
-  // first particle whose stresses are not finite, or -1. On its own walk of the stencils, where the
-  // material's walk (update_material_points) does not carry stress_terms.
+  // first particle whose stresses are not finite, or -1. On a walk of the stencils of its own:
+  // riding on the material's walk was measured slower (bench/RESULTS.md 1aj).
   long long update_stress(const Particles& P, const StepScratch& w, const double* vx, const double* vy, double dt);
-  // The same update riding on another walk of each stencil with the same nodal velocities: per
-  // particle, add() at every node, then update() before anything changes the particle's
-  // deformation gradient (its volume sets k); update() says whether the stresses are finite.
-  struct StressSums {
-    double W = 0.0, rate = 0.0, gx = 0.0, gy = 0.0;
-  };
-  struct StressTerms {
-    MicropolarRotations* unit;
-    const Particles* P;
-    const double *vx, *vy, *spin;
-    double dt;
-    void add(StressSums& s, std::size_t i, double S, double dx, double dy) const {
-      s.W += 0.5 * (vy[i] * dx - vx[i] * dy);
-      s.rate += S * spin[i];
-      s.gx += spin[i] * dx;
-      s.gy += spin[i] * dy;
-    }
-    bool update(std::size_t p, const StressSums& s) const { return unit->update_particle_stress(*P, p, s, dt); }
-  };
-  StressTerms stress_terms(const Particles& P, const double* vx, const double* vy, double dt);
   // The internal force: the skew stress's nodal forces (x, y) and the nodal couples, the three
   // fields `fields`; particle(p, V) the stresses times the particle's volume V (N/m, N), whose
   // add(f, S, dS/dx, dS/dy) adds a node's share into f[0..3).
@@ -119,7 +99,6 @@ class MicropolarRotations {
 
  private:
   double modulus(const Particles& P, std::size_t p) const;
-  bool update_particle_stress(const Particles& P, std::size_t p, const StressSums& s, double dt);
   double inertia_per_mass(const Grid& grid) const;
 
   Micropolar settings_;

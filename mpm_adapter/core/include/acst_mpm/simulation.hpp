@@ -101,8 +101,7 @@ class Simulation {
   void compute_shape_functions();
   void map_mass_and_momentum();
   void apply_constraints();
-  void update_stress(const double* vx, const double* vy, double dt,
-                     const MicropolarRotations::StressTerms* rotations = nullptr);
+  void update_stress(const double* vx, const double* vy, double dt);
   void footing_contact();
   void internal_force_and_reactions();
   void update_particles();

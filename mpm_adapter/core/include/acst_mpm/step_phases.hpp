@@ -13,8 +13,8 @@ enum class StepPhase {
   shape_functions,  // every particle's weights and slopes
   map_to_grid,      // mass, momentum and the micropolar rotations' inertia and spin to the nodes
   constraints,      // the nodes' constraints and velocities
-  micropolar_stress,  // on their own walk of the stencils: only where the material's walk does not carry them
-  stress_update,    // the material's calls (both halves with update-stress-average), and the rotations' stresses
+  micropolar_stress,
+  stress_update,    // the material's calls (both halves with update-stress-average)
   footing_contact,
   internal_force,   // internal force, body forces, walls' and constraints' reactions, accelerations
   particle_update,  // FLIP / XPIC(m) velocities and positions, the micropolar spin

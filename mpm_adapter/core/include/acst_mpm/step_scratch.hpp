@@ -55,21 +55,15 @@ struct StepScratch {
   // Particle p's velocity gradient L_ij = dv_i/dx_j (xx xy yx yy) from the nodal velocities. Summed
   // in locals: summing into an array whose address goes on to the material made the compiler
   // store it on every node of the stencil.
-  // `also(i, S, dS/dx, dS/dy)` rides on the same walk (another sum over the stencil).
-  template <class Also>
-  std::array<double, 4> velocity_gradient(std::size_t p, const double* vx, const double* vy, Also&& also) const {
+  std::array<double, 4> velocity_gradient(std::size_t p, const double* vx, const double* vy) const {
     double xx = 0.0, xy = 0.0, yx = 0.0, yy = 0.0;
-    stencil(p, [&](std::size_t i, double S, double gx, double gy) {
+    stencil(p, [&](std::size_t i, double, double gx, double gy) {
       xx += vx[i] * gx;
       xy += vx[i] * gy;
       yx += vy[i] * gx;
       yy += vy[i] * gy;
-      also(i, S, gx, gy);
     });
     return {xx, xy, yx, yy};
-  }
-  std::array<double, 4> velocity_gradient(std::size_t p, const double* vx, const double* vy) const {
-    return velocity_gradient(p, vx, vy, [](std::size_t, double, double, double) {});
   }
 };
 
